@@ -1,0 +1,56 @@
+// `capsim simulate` against `capsim render`, side by side on the same scene with
+// the same host threads: the machine simulation should cost at most 1.2x the
+// tracing alone. Also reports simulated seconds per host second.
+//
+//   bench_simulate [--benchmark_filter=...]
+// Scene: scenes/balls.csg at 512x512; machine: 8x8 cells, dot mode, cap profile.
+
+#include "machine.h"
+
+#include "capsim/parser.h"
+#include "capsim/render.h"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+namespace {
+
+using namespace capsim;
+
+const PreparedScene& balls() {
+  static const PreparedScene scene = prepare_scene(
+      parse_scene_file(std::string(CAPSIM_SOURCE_DIR) + "/scenes/balls.csg"), PrepareOptions{});
+  return scene;
+}
+
+void BM_Render(benchmark::State& state) {
+  const Tracer tracer(balls(), TraceOptions{});
+  const int threads = static_cast<int>(state.range(0));
+  for (auto _ : state) benchmark::DoNotOptimize(render(tracer, threads));
+}
+
+void BM_Simulate(benchmark::State& state) {
+  const Tracer tracer(balls(), TraceOptions{});
+  const int threads = static_cast<int>(state.range(0));
+  sim::MachineConfig config;  // 8x8 cells, dot mode
+  config.profile = sim::load_cost_profile("cap");
+  double simulated_seconds = 0;
+  for (auto _ : state) {
+    const sim::SimulationResult r = sim::simulate_frame(tracer, config, threads, false);
+    simulated_seconds = r.frame.seconds(config.profile.clock_hz);
+    benchmark::DoNotOptimize(r.screen.rgba.data());
+  }
+  state.counters["simulated_s"] = simulated_seconds;
+  // Simulated seconds per host second: simulated_s divided by the wall time of one run.
+  state.counters["simulated_s_per_host_s"] =
+      benchmark::Counter(simulated_seconds * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
+}
+
+BENCHMARK(BM_Render)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+BENCHMARK(BM_Simulate)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+
+}  // namespace
+
+BENCHMARK_MAIN();

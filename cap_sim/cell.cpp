@@ -1,0 +1,78 @@
+#include "cell.h"
+
+#include "frame_protocol.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace capsim::sim {
+
+Cell::Cell(CellId id, const CellWindow& window, int timeline_track, const Wiring& wiring)
+    : id_(id),
+      window_(window),
+      track_(timeline_track),
+      wire_(wiring),
+      bus_inbox_(wiring.kernel),
+      video_memory_(window.pixel_count(), 1) {}
+
+Process Cell::run_frame() {
+  // Every cell holds the same program and the same data (§3.3): take in what the
+  // host broadcasts, then wait for its start command.
+  Cycles waiting_since = wire_.kernel.now();
+  for (std::string_view expected : kFrameBroadcasts) {
+    const BusTransfer t = co_await bus_inbox_.receive();
+    if (t.granted > waiting_since)
+      wire_.timeline.span(track_, "wait for host", "wait", waiting_since, t.granted);
+    take_in(t, expected);
+    waiting_since = wire_.kernel.now();
+  }
+  const Cycles idle_end = wire_.kernel.now();
+
+  // Trace the pixels this cell's window controller shows, in order, into video
+  // memory. Nothing reaches a cell while it traces, so its clock can advance once
+  // by the cycles of all its pixels: the same time as pixel by pixel, without an
+  // event per pixel.
+  for (int k = 0; k < window_.pixel_count(); ++k) {
+    const ScreenPixel p = window_.screen_pixel(k);
+    const PixelWork& work = wire_.screen.work_at(p.x, p.y);
+    write_video_memory(k, p);
+    record_.work += work.cost;
+    record_.rays += work.rays;
+  }
+  co_await wire_.kernel.delay(record_.work.total());
+  record_.pixels = static_cast<std::uint64_t>(window_.pixel_count());
+  record_.busy = wire_.kernel.now() - idle_end;
+  wire_.timeline.span(track_, fmt::format("trace {} pixels", record_.pixels), "compute", idle_end,
+                      wire_.kernel.now());
+
+  // Tell the host this cell is done.
+  const BusTransfer done = co_await wire_.bus.transfer(id_, kHost, kDoneMessageBytes,
+                                                       std::string(kDoneMessage));
+  if (done.granted > done.requested)
+    wire_.timeline.span(track_, "wait for bus", "wait", done.requested, done.granted);
+  wire_.timeline.span(track_, "send done", "message", done.granted, done.delivered, done.bytes);
+  record_.comm += done.delivered - done.requested;
+  record_.finish = done.delivered;
+}
+
+void Cell::take_in(const BusTransfer& t, std::string_view expected) {
+  if (t.label != expected)
+    throw std::logic_error(fmt::format("cell {} expected \"{}\" from the host, got \"{}\"", id_,
+                                       expected, t.label));
+  record_.comm += t.delivered - t.granted;
+  wire_.timeline.span(track_, fmt::format("receive {}", t.label), "receive", t.granted, t.delivered,
+                      t.bytes);
+}
+
+void Cell::write_video_memory(int k, ScreenPixel p) {
+  const Framebuffer& src = wire_.screen.image;
+  const std::size_t s = static_cast<std::size_t>(p.y) * src.width + p.x;
+  const std::size_t d = static_cast<std::size_t>(k);
+  std::copy_n(src.rgba.begin() + 4 * s, 4, video_memory_.rgba.begin() + 4 * d);
+  video_memory_.depth[d] = src.depth[s];
+  video_memory_.id[d] = src.id[s];
+}
+
+}  // namespace capsim::sim

@@ -1,0 +1,104 @@
+// `capsim simulate`: the CAP machine running the tracer, cycle by cycle.
+
+#include "cli_commands.h"
+#include "cli_options.h"
+#include "heatmap.h"
+#include "machine.h"
+#include "progress.h"
+#include "sim_report.h"
+#include "text_output.h"
+
+#include "capsim/image_io.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+
+namespace capsim::cli {
+
+namespace {
+
+struct SimulateOptions {
+  std::string cells = "8x8";
+  std::string mode = "dot";
+  std::string profile = "cap";
+  std::string report;   // JSON report path; empty = none
+  std::string trace;    // Chrome trace-event JSON path; empty = none
+  std::string heatmap;  // PNG path; empty = none
+};
+
+bool ends_with_png(std::string path) {
+  std::transform(path.begin(), path.end(), path.begin(), [](unsigned char c) { return std::tolower(c); });
+  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
+}
+
+// Fails before any work if an output's directory does not exist.
+void check_output_directory(const std::string& path) {
+  if (path.empty()) return;
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir))
+    throw std::invalid_argument(fmt::format("{}: directory {} does not exist", path, dir.string()));
+}
+
+}  // namespace
+
+Command add_simulate_command(CLI::App& app) {
+  auto opts = std::make_shared<TracerOptions>();
+  auto sim = std::make_shared<SimulateOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "simulate",
+      "Simulate the Cellular Array Processor running the tracer: the screen its video bus shows, "
+      "per-cell times and the load spread (an .exr output also carries a 'cycles' channel)");
+  add_tracer_options(*cmd, *opts);
+  cmd->add_option("--cells", sim->cells, "Cell grid RxC, 1x1 to 32x32")->default_val("8x8");
+  cmd->add_option("--mode", sim->mode,
+                  "Pixel mode of the window controllers: block (a rectangle per cell), line (every "
+                  "(R*C)-th row) or dot (one pixel of every RxC square)")
+      ->default_val("dot")
+      ->check(CLI::IsMember({"block", "line", "dot"}));
+  cmd->add_option("--profile", sim->profile,
+                  "Cost profile: cap (a CAP cell), m380 (the mainframe; use with --cells 1x1) or a "
+                  "profile JSON file (docs/simulation.md)")
+      ->default_val("cap");
+  cmd->add_option("--report", sim->report, "Write the report as JSON to this file");
+  cmd->add_option("--trace", sim->trace,
+                  "Write the timeline as Chrome trace-event JSON (opens in ui.perfetto.dev)");
+  cmd->add_option("--heatmap", sim->heatmap, "Write a PNG of per-cell busy time on the cell grid");
+
+  return [opts, sim] {
+    sim::MachineConfig config;
+    config.cells = sim::parse_cell_grid(sim->cells);
+    config.mode = *sim::parse_pixel_mode(sim->mode);
+    config.profile = sim::load_cost_profile(sim->profile);
+    if (!sim->heatmap.empty() && !ends_with_png(sim->heatmap))
+      throw std::invalid_argument(fmt::format("{}: the heat map is written as .png", sim->heatmap));
+    for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap}) check_output_directory(*path);
+
+    const PreparedScene scene = load_scene(*opts);
+    const Tracer tracer(scene, trace_options(*opts));
+    const sim::SimulationResult result =
+        sim::simulate_frame(tracer, config, opts->threads, sim::Progress::stderr_is_terminal());
+
+    std::vector<ExtraChannel> extra;
+    if (std::filesystem::path(opts->output).extension() != ".png" &&
+        std::filesystem::path(opts->output).extension() != ".PNG")
+      extra.push_back({"cycles", result.pixel_cycles});
+    write_image(opts->output, result.screen, extra);
+    if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
+    if (!sim->trace.empty()) {
+      const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", sim::to_string(config.cells),
+                                           sim::to_string(config.mode), config.profile.name);
+      sim::write_text_file(sim->trace,
+                           result.timeline.to_chrome_trace(name, config.profile.clock_hz).dump() + "\n");
+    }
+    if (!sim->heatmap.empty()) write_image(sim->heatmap, sim::to_framebuffer(sim::render_heatmap(result)));
+    fmt::print("{}", sim::format_report(result));
+    return 0;
+  };
+}
+
+}  // namespace capsim::cli

@@ -1,0 +1,106 @@
+#pragma once
+// A cost profile: what each counted operation and each transfer costs on one
+// machine, in integer cycles at the profile's clock. Profiles are data (JSON; the
+// format is in docs/simulation.md, the figures in docs/calibration.md); `cap` and
+// `m380` are compiled into the binary, any other file can be loaded by path.
+
+#include "cycles.h"
+
+#include "capsim/op_counts.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace capsim::sim {
+
+// What a cell pays per operation the tracer counts.
+struct CellCosts {
+  Cycles sphere_test, cone_test, box_test;  // Table 4-1; include carrying the ray into object space
+  Cycles dda_setup, dda_step;               // Table 4-1: Algorithm-2
+  Cycles matvec;                            // Table 4-1: 4x4 matrix x vector (normals)
+  Cycles tree_visit;                        // one status-tree node visited (Algorithm-4)
+  Cycles hit_sort;                          // one crossing put in order along the ray
+  Cycles shading_eval;                      // one local illumination evaluation
+  Cycles ray_other;                         // the fitted per-ray fixed work ("RO" of eq. 1-2)
+  Cycles pixel_write;                       // one pixel stored in video memory
+};
+
+// What the host pays for voxel generation (Algorithm-3).
+struct HostCosts {
+  Cycles primitive;    // per primitive placed: bounding box and its projection
+  Cycles matmat;       // 4x4 matrix x matrix
+  Cycles matvec;       // 4x4 matrix x vector (box corners)
+  Cycles column;       // per X-Y voxel column: the Zmin / Zmax bounds
+  Cycles voxel_entry;  // per (voxel, primitive) entry written
+};
+
+struct BusCosts {
+  std::uint64_t bytes_per_second = 0;
+  Cycles arbitration;  // from the start of a grant to the first byte on the bus
+  Cycles latency;      // from the last byte on the bus to the data in the receivers' memory
+};
+
+struct LinkCosts {
+  std::uint64_t bits_per_second = 0;
+  Cycles latency;  // per hop, from the last bit sent to the message in the next cell
+};
+
+struct CostProfile {
+  std::string name;
+  std::string description;
+  std::uint64_t clock_hz = 0;
+  CellCosts cell;
+  HostCosts host;
+  BusCosts bus;
+  LinkCosts link;
+  std::uint64_t cell_memory_bytes = 0;  // program + scene + voxel data must fit
+  std::uint64_t program_bytes = 0;      // the tracer program every cell holds
+
+  // Cycles to move `bytes` at the bus's and a link's rate (rounded up).
+  Cycles bus_data_cycles(std::uint64_t bytes) const;
+  Cycles link_data_cycles(std::uint64_t bytes) const;
+};
+
+// Parses a profile's JSON text. Throws std::runtime_error naming `source` and
+// the offending key for malformed JSON, a missing or unknown key, or a value out
+// of range. Times in the file are microseconds ("..._us"); each becomes
+// round(us * clock_hz / 1e6) cycles.
+CostProfile parse_cost_profile(std::string_view json_text, const std::string& source);
+
+// "cap" or "m380" (compiled in), or the path of a profile file.
+CostProfile load_cost_profile(const std::string& name_or_path);
+std::vector<std::string> builtin_profile_names();
+
+// Table 4-3's processes.
+enum class CostCategory { Intersection, Dda, Csg, VoxelGeneration, Other };
+inline constexpr int kCostCategories = 5;
+const char* to_string(CostCategory c);  // "intersection", "3DDDA", ...
+const char* json_key(CostCategory c);   // "intersection", "dda", "csg", "voxel_generation", "other"
+
+struct CostBreakdown {
+  std::array<Cycles, kCostCategories> cycles{};
+
+  Cycles& operator[](CostCategory c) { return cycles[static_cast<int>(c)]; }
+  Cycles operator[](CostCategory c) const { return cycles[static_cast<int>(c)]; }
+  Cycles total() const {
+    Cycles sum;
+    for (Cycles c : cycles) sum += c;
+    return sum;
+  }
+  CostBreakdown& operator+=(const CostBreakdown& o) {
+    for (int i = 0; i < kCostCategories; ++i) cycles[i] += o.cycles[i];
+    return *this;
+  }
+};
+
+// The cycles one pixel costs a cell: each operation count times its cost, the
+// per-ray fixed work for every ray, and one video-memory write.
+CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& costs);
+
+// The host's cycles for Algorithm-3 (all in CostCategory::VoxelGeneration).
+CostBreakdown voxel_generation_cost(const VoxelGenCounts& counts, const HostCosts& costs);
+
+}  // namespace capsim::sim

@@ -1,0 +1,28 @@
+#pragma once
+// The per-cell heat map (--heatmap): each cell's busy time as a coloured block,
+// laid out as the cell grid (row 0 at the top), with a colour bar below labelled
+// with the smallest and largest busy time in simulated seconds. Colours follow
+// the viridis scale (dark blue = least busy, yellow = most busy).
+
+#include "machine.h"
+
+#include <string>
+#include <vector>
+
+namespace capsim::sim {
+
+struct RgbImage {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;  // 3 bytes per pixel, row 0 at the top
+};
+
+RgbImage render_heatmap(const SimulationResult& r);
+
+// The image as a framebuffer whose sRGB encoding (write_image's PNG output) gives
+// back exactly these 8-bit colours.
+Framebuffer to_framebuffer(const RgbImage& image);
+
+// 8-bit sRGB -> linear, the inverse of linear_to_srgb8 on every 8-bit value.
+float srgb8_to_linear(unsigned char v);
+
+}  // namespace capsim::sim

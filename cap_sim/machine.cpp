@@ -1,0 +1,127 @@
+#include "machine.h"
+
+#include "cell.h"
+#include "command_bus.h"
+#include "event_kernel.h"
+#include "host.h"
+#include "progress.h"
+#include "video_bus.h"
+
+#include <fmt/core.h>
+
+#include <memory>
+#include <stdexcept>
+
+namespace capsim::sim {
+
+void check_cell_memory(const SceneFootprint& f, const CostProfile& profile) {
+  const std::uint64_t needed = profile.program_bytes + f.scene_bytes() + f.voxel_bytes();
+  if (needed > profile.cell_memory_bytes)
+    throw std::runtime_error(fmt::format(
+        "the scene does not fit a cell's memory: it needs {} bytes (program {} + scene {} + voxel "
+        "data {}) but a cell of profile '{}' has {} bytes; try a coarser --grid",
+        needed, profile.program_bytes, f.scene_bytes(), f.voxel_bytes(), profile.name,
+        profile.cell_memory_bytes));
+}
+
+namespace {
+
+std::string sender_name(Endpoint e, const CellGrid& grid) {
+  if (e == kHost) return "host";
+  const CellPosition p = grid.position(e);
+  return fmt::format("cell[{},{}]", p.row, p.col);
+}
+
+}  // namespace
+
+SimulationResult run_frame(const PreparedScene& scene, const TracedScreen& screen,
+                           const MachineConfig& config) {
+  const CostProfile& profile = config.profile;
+  const CellGrid grid = config.cells;
+  SimulationResult result;
+  result.config = config;
+  result.footprint = scene_footprint(scene);
+  check_cell_memory(result.footprint, profile);
+
+  const WindowLayout layout(config.mode, grid, screen.image.width, screen.image.height);
+  const CostBreakdown voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.host);
+
+  EventKernel kernel;
+  CommandBus bus(kernel, profile);
+  Timeline& timeline = result.timeline;
+  const int host_track = timeline.add_track("host");
+  const int bus_track = timeline.add_track("command bus");
+
+  Host host({kernel, bus, timeline}, host_track, grid.cell_count(), profile.program_bytes,
+            result.footprint, voxel_generation.total());
+  std::vector<std::unique_ptr<Cell>> cells;
+  cells.reserve(grid.cell_count());
+  for (CellId id = 0; id < grid.cell_count(); ++id) {
+    const CellPosition p = grid.position(id);
+    const int track = timeline.add_track(fmt::format("cell[{},{}]", p.row, p.col));
+    cells.push_back(std::make_unique<Cell>(id, layout.window(id), track,
+                                           Cell::Wiring{kernel, bus, timeline, screen}));
+  }
+
+  bus.on_delivery([&](const BusTransfer& t) {
+    if (t.receiver == kAllCells) {
+      for (auto& cell : cells) cell->bus_inbox().deliver(t);
+    } else if (t.receiver == kHost) {
+      host.bus_inbox().deliver(t);
+    } else {
+      cells.at(t.receiver)->bus_inbox().deliver(t);
+    }
+  });
+
+  kernel.spawn(host.run_frame());
+  for (auto& cell : cells) kernel.spawn(cell->run_frame());
+  kernel.run();
+  if (!kernel.all_processes_finished())
+    throw std::logic_error("the simulated frame deadlocked: a process waits for a message that never came");
+
+  for (const BusTransfer& t : bus.log())
+    timeline.span(bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, grid)),
+                  t.receiver == kAllCells ? "broadcast" : "message", t.granted, t.released, t.bytes);
+
+  result.events = kernel.events_run();
+  result.frame = host.frame_end();
+  result.breakdown = voxel_generation;
+  std::vector<const Framebuffer*> video;
+  for (const auto& cell : cells) {
+    const CellRecord& r = cell->record();
+    CellReport c;
+    c.id = cell->id();
+    c.position = grid.position(c.id);
+    c.pixels = r.pixels;
+    c.rays = r.rays;
+    c.busy = r.busy;
+    c.comm = r.comm;
+    c.finish = r.finish;
+    c.idle = r.finish - r.busy - r.comm;
+    c.work = r.work;
+    result.breakdown += r.work;
+    result.cells.push_back(c);
+    video.push_back(&cell->video_memory());
+  }
+  result.screen = compose_screen(layout, video);
+
+  result.pixel_cycles.resize(screen.work.size());
+  for (std::size_t i = 0; i < screen.work.size(); ++i)
+    result.pixel_cycles[i] = static_cast<float>(screen.work[i].cost.total().count());
+  return result;
+}
+
+SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
+                                bool show_progress) {
+  const Camera& cam = tracer.scene().camera;
+  // Refuse a scene that does not fit before spending time tracing it.
+  check_cell_memory(scene_footprint(tracer.scene()), config.profile);
+  TracedScreen screen;
+  {
+    Progress progress("tracing", static_cast<std::uint64_t>(cam.width) * cam.height, show_progress);
+    screen = trace_screen(tracer, config.profile.cell, threads, &progress);
+  }
+  return run_frame(tracer.scene(), screen, config);
+}
+
+}  // namespace capsim::sim

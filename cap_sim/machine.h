@@ -1,0 +1,63 @@
+#pragma once
+// The whole machine for one frame: host, command bus, neighbour links and an
+// R x C grid of cells, run by the event kernel. The tracing itself is done ahead
+// by host threads (trace_screen); the event loop alone decides simulated time.
+
+#include "cell_grid.h"
+#include "cost_profile.h"
+#include "scene_footprint.h"
+#include "timeline.h"
+#include "traced_screen.h"
+#include "window_controller.h"
+
+#include "capsim/prepared_scene.h"
+#include "capsim/render.h"
+#include "capsim/tracer.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace capsim::sim {
+
+struct MachineConfig {
+  CellGrid cells{8, 8};
+  PixelMode mode = PixelMode::Dot;
+  CostProfile profile;
+};
+
+struct CellReport {
+  CellId id = 0;
+  CellPosition position;
+  std::uint64_t pixels = 0;
+  std::uint64_t rays = 0;
+  Cycles busy, idle, comm, finish;  // idle = finish - busy - comm
+  CostBreakdown work;
+};
+
+struct SimulationResult {
+  MachineConfig config;
+  SceneFootprint footprint;
+  std::vector<CellReport> cells;
+  CostBreakdown breakdown;   // every cell's work plus the host's voxel generation
+  Cycles frame;              // the last completion reached the host: the frame time
+  Framebuffer screen;        // what the video bus shows
+  std::vector<float> pixel_cycles;  // cycles spent on each screen pixel, row-major
+  Timeline timeline;
+  std::uint64_t events = 0;  // events the kernel ran
+};
+
+// Program + scene + voxel data must fit a cell's memory. Throws std::runtime_error
+// naming the needed and the available bytes.
+void check_cell_memory(const SceneFootprint& footprint, const CostProfile& profile);
+
+// Runs one frame on the machine with the work traced ahead.
+// Precondition: screen was traced from `scene` with config.profile's cell costs.
+SimulationResult run_frame(const PreparedScene& scene, const TracedScreen& screen,
+                           const MachineConfig& config);
+
+// trace_screen + run_frame. threads: 0 = all hardware threads; the result does not
+// depend on it. show_progress: progress on stderr (see Progress).
+SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
+                                bool show_progress);
+
+}  // namespace capsim::sim

@@ -1,0 +1,72 @@
+#pragma once
+// The neighbour links: every cell has a link to each adjacent cell (N, E, S, W),
+// one direction per link, each carrying one message at a time in FIFO order.
+// A hop occupies its link for ceil(bytes * 8 * clock / bits_per_second) cycles and
+// the message is in the next cell `latency` cycles after its last bit.
+// Messages to cells that are not adjacent go store-and-forward, hop by hop: X
+// first (east or west along the row), then Y (north or south along the column);
+// each intermediate cell receives the whole message before sending it on, in its
+// link hardware, without the cell's program.
+
+#include "cell_grid.h"
+#include "cost_profile.h"
+#include "event_kernel.h"
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace capsim::sim {
+
+struct LinkMessage {
+  std::string label;
+  CellId from = 0;
+  CellId to = 0;
+  std::uint64_t bytes = 0;
+  Cycles sent;     // the sender handed it to its first link
+  Cycles arrived;  // it is in the destination's memory
+  int hops = 0;
+};
+
+class NeighbourLinks {
+ public:
+  NeighbourLinks(EventKernel& kernel, CellGrid grid, const CostProfile& profile);
+
+  // Called at each message's arrival at its destination (priority Delivery).
+  void on_delivery(std::function<void(const LinkMessage&)> handler) { handler_ = std::move(handler); }
+
+  // The cells a message passes after leaving `from`, ending with `to` (X then Y).
+  std::vector<CellId> route(CellId from, CellId to) const;
+  // One uncontended hop: data cycles plus latency.
+  Cycles hop_cycles(std::uint64_t bytes) const;
+
+  // co_await links.send(...): the sender continues when the message has left it
+  // (its last bit is on the first link); delivery happens later.
+  struct SendAwaiter {
+    NeighbourLinks& links;
+    LinkMessage message;
+    bool await_ready() const noexcept { return false; }
+    void await_suspend(ProcessHandle h) { links.start(std::move(message), h); }
+    void await_resume() const noexcept {}
+  };
+  SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, std::string label);
+
+  const std::vector<LinkMessage>& log() const { return log_; }
+
+ private:
+  CellId next_hop(CellId at, CellId to) const;
+  void start(LinkMessage m, ProcessHandle sender);
+  // Queues the message on the link from `at` toward its next hop; returns the
+  // cycle its last bit leaves `at`.
+  Cycles forward(LinkMessage m, CellId at);
+
+  EventKernel& kernel_;
+  CellGrid grid_;
+  const CostProfile& profile_;
+  std::function<void(const LinkMessage&)> handler_;
+  std::vector<Cycles> link_free_at_;  // per (cell, direction): cell * 4 + direction
+  std::vector<LinkMessage> log_;
+};
+
+}  // namespace capsim::sim

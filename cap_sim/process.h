@@ -1,0 +1,54 @@
+#pragma once
+// A simulated process: a C++20 coroutine that the event kernel resumes. Its body
+// reads as the sequential program a host or a cell runs; every `co_await` is a
+// point where simulated time may pass (a delay, a message, a bus transfer).
+
+#include <coroutine>
+#include <exception>
+#include <utility>
+
+namespace capsim::sim {
+
+class Process {
+ public:
+  struct promise_type {
+    std::exception_ptr failure;  // an exception the body let escape
+
+    Process get_return_object() {
+      return Process(std::coroutine_handle<promise_type>::from_promise(*this));
+    }
+    // A process starts only when the kernel resumes it (EventKernel::spawn).
+    std::suspend_always initial_suspend() noexcept { return {}; }
+    // Stays suspended at the end so the kernel can see done() and any failure.
+    std::suspend_always final_suspend() noexcept { return {}; }
+    void return_void() {}
+    void unhandled_exception() { failure = std::current_exception(); }
+  };
+  using Handle = std::coroutine_handle<promise_type>;
+
+  Process() = default;
+  explicit Process(Handle h) : handle_(h) {}
+  Process(Process&& o) noexcept : handle_(std::exchange(o.handle_, {})) {}
+  Process& operator=(Process&& o) noexcept {
+    if (this != &o) {
+      if (handle_) handle_.destroy();
+      handle_ = std::exchange(o.handle_, {});
+    }
+    return *this;
+  }
+  Process(const Process&) = delete;
+  Process& operator=(const Process&) = delete;
+  ~Process() {
+    if (handle_) handle_.destroy();
+  }
+
+  Handle handle() const { return handle_; }
+  bool done() const { return handle_ && handle_.done(); }
+
+ private:
+  Handle handle_;
+};
+
+using ProcessHandle = Process::Handle;
+
+}  // namespace capsim::sim

@@ -1,0 +1,15 @@
+#include "scene_footprint.h"
+
+namespace capsim::sim {
+
+SceneFootprint scene_footprint(const PreparedScene& s) {
+  SceneFootprint f;
+  const std::uint64_t prims = s.prims.size();
+  f.primitives = prims * kPrimitiveRecordBytes;
+  f.status_tree = s.tree_template.nodes().size() * kStatusNodeBytes + prims * kStatusLeafBytes;
+  f.view = kCameraBytes + s.lights.size() * kLightBytes + kBackgroundBytes;
+  f.voxel_grid = kGridHeaderBytes + (s.grid.offsets.size() + s.grid.items.size()) * kGridWordBytes;
+  return f;
+}
+
+}  // namespace capsim::sim

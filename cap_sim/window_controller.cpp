@@ -1,0 +1,103 @@
+#include "window_controller.h"
+
+#include <stdexcept>
+
+namespace capsim::sim {
+
+const char* to_string(PixelMode mode) {
+  switch (mode) {
+    case PixelMode::Block: return "block";
+    case PixelMode::Line: return "line";
+    case PixelMode::Dot: return "dot";
+  }
+  return "?";
+}
+
+std::optional<PixelMode> parse_pixel_mode(const std::string& text) {
+  if (text == "block") return PixelMode::Block;
+  if (text == "line") return PixelMode::Line;
+  if (text == "dot") return PixelMode::Dot;
+  return std::nullopt;
+}
+
+CellWindow::CellWindow(int origin_x, int origin_y, int columns, int rows, int stride_x,
+                       int stride_y)
+    : origin_x_(origin_x),
+      origin_y_(origin_y),
+      columns_(rows > 0 ? columns : 0),
+      rows_(columns > 0 ? rows : 0),
+      stride_x_(stride_x),
+      stride_y_(stride_y) {}
+
+namespace {
+
+// Start of part `k` when `length` is split into `parts` as evenly as possible.
+int split_start(int k, int length, int parts) {
+  return static_cast<int>(static_cast<long long>(k) * length / parts);
+}
+
+// The part of an even split that holds position p: the largest k with
+// split_start(k) <= p, i.e. floor(((p + 1) * parts - 1) / length).
+int split_part(int p, int length, int parts) {
+  return static_cast<int>((static_cast<long long>(p + 1) * parts - 1) / length);
+}
+
+// How many of 0 .. length-1 are congruent to `first` modulo `stride`.
+int strided_count(int length, int first, int stride) {
+  return first < length ? (length - first + stride - 1) / stride : 0;
+}
+
+}  // namespace
+
+WindowLayout::WindowLayout(PixelMode mode, CellGrid grid, int width, int height)
+    : mode_(mode), grid_(grid), width_(width), height_(height) {
+  if (width < 1 || height < 1 || grid.rows < 1 || grid.cols < 1)
+    throw std::invalid_argument("window layout needs a non-empty screen and cell grid");
+  const int cells = grid.cell_count();
+  windows_.reserve(cells);
+  for (CellId id = 0; id < cells; ++id) {
+    const CellPosition p = grid.position(id);
+    switch (mode) {
+      case PixelMode::Block: {
+        const int x0 = split_start(p.col, width, grid.cols);
+        const int x1 = split_start(p.col + 1, width, grid.cols);
+        const int y0 = split_start(p.row, height, grid.rows);
+        const int y1 = split_start(p.row + 1, height, grid.rows);
+        windows_.emplace_back(x0, y0, x1 - x0, y1 - y0, 1, 1);
+        break;
+      }
+      case PixelMode::Line:
+        windows_.emplace_back(0, id, width, strided_count(height, id, cells), 1, cells);
+        break;
+      case PixelMode::Dot:
+        windows_.emplace_back(p.col, p.row, strided_count(width, p.col, grid.cols),
+                              strided_count(height, p.row, grid.rows), grid.cols, grid.rows);
+        break;
+    }
+  }
+}
+
+PixelOwner WindowLayout::owner(ScreenPixel s) const {
+  switch (mode_) {
+    case PixelMode::Block: {
+      const int row = split_part(s.y, height_, grid_.rows);
+      const int col = split_part(s.x, width_, grid_.cols);
+      const int x0 = split_start(col, width_, grid_.cols);
+      const int x1 = split_start(col + 1, width_, grid_.cols);
+      const int y0 = split_start(row, height_, grid_.rows);
+      return {grid_.id({row, col}), (s.y - y0) * (x1 - x0) + (s.x - x0)};
+    }
+    case PixelMode::Line: {
+      const int cells = grid_.cell_count();
+      return {s.y % cells, (s.y / cells) * width_ + s.x};
+    }
+    case PixelMode::Dot: {
+      const CellPosition p{s.y % grid_.rows, s.x % grid_.cols};
+      return {grid_.id(p), (s.y / grid_.rows) * strided_count(width_, p.col, grid_.cols) +
+                               s.x / grid_.cols};
+    }
+  }
+  throw std::logic_error("unknown pixel mode");
+}
+
+}  // namespace capsim::sim

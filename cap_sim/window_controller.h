@@ -1,0 +1,81 @@
+#pragma once
+// The window controller of each cell: where on the screen, and in which pattern,
+// the cell's video memory appears (paper §3.1). Every pattern is a strided
+// rectangle: video-memory pixel k of a cell appears at
+//   x = origin_x + (k % columns) * stride_x,   y = origin_y + (k / columns) * stride_y.
+// Modes on an R x C cell grid and a W x H screen, for cell (row r, col c), k = r*C + c:
+//   block: the rectangle [floor(c*W/C), floor((c+1)*W/C)) x [floor(r*H/R), floor((r+1)*H/R)):
+//          rows and columns split as evenly as possible;
+//   line:  every (R*C)-th screen row, starting at row k, full width;
+//   dot:   in every R x C square of the screen (R rows, C columns) the pixel at the
+//          cell's own (col, row) position (the paper's 8x8 dot mode).
+// Screens that are not multiples of the grid are covered the same way; cells may
+// then own different pixel counts, or none at all.
+
+#include "cell_grid.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace capsim::sim {
+
+enum class PixelMode { Block, Line, Dot };
+const char* to_string(PixelMode mode);
+std::optional<PixelMode> parse_pixel_mode(const std::string& text);
+
+struct ScreenPixel {
+  int x = 0;  // column, from the left
+  int y = 0;  // row, from the top
+  bool operator==(const ScreenPixel&) const = default;
+};
+
+class CellWindow {
+ public:
+  CellWindow() = default;
+  CellWindow(int origin_x, int origin_y, int columns, int rows, int stride_x, int stride_y);
+
+  int pixel_count() const { return columns_ * rows_; }
+  int columns() const { return columns_; }
+  int rows() const { return rows_; }
+  // Precondition: 0 <= k < pixel_count().
+  ScreenPixel screen_pixel(int k) const {
+    return {origin_x_ + (k % columns_) * stride_x_, origin_y_ + (k / columns_) * stride_y_};
+  }
+
+ private:
+  int origin_x_ = 0, origin_y_ = 0;
+  int columns_ = 0, rows_ = 0;
+  int stride_x_ = 1, stride_y_ = 1;
+};
+
+// Which cell shows a screen pixel, and from which video-memory pixel.
+struct PixelOwner {
+  CellId cell = 0;
+  int video_index = 0;
+  bool operator==(const PixelOwner&) const = default;
+};
+
+// The window set-up of the whole machine for one mode, grid and screen size.
+class WindowLayout {
+ public:
+  // Precondition: width, height >= 1; grid sides >= 1.
+  WindowLayout(PixelMode mode, CellGrid grid, int width, int height);
+
+  const CellWindow& window(CellId cell) const { return windows_[cell]; }
+  // The inverse of the windows, computed directly from the mode's rule.
+  PixelOwner owner(ScreenPixel p) const;
+
+  PixelMode mode() const { return mode_; }
+  const CellGrid& grid() const { return grid_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  PixelMode mode_;
+  CellGrid grid_;
+  int width_, height_;
+  std::vector<CellWindow> windows_;
+};
+
+}  // namespace capsim::sim

@@ -1,0 +1,40 @@
+#pragma once
+// The parametric 3DDDA (Algorithm-2): walks the voxels a ray passes through, in
+// order, with two additions and a comparison per step and no division.
+
+#include "capsim/voxel_grid.h"
+
+namespace capsim {
+
+class Dda3 {
+ public:
+  // Set-up: clips the ray to the universe and finds the first voxel, the
+  // increments and the t of the next x, y, z plane crossings. A zero direction
+  // component never crosses its planes (t = +inf). Returns false if the ray's
+  // [tmin, tmax] misses the universe.
+  bool setup(const VoxelGrid& grid, const Ray& ray);
+
+  // The current voxel and the t range [t_in(), t_out()] the ray spends in it.
+  int voxel() const { return (vz_ * n_ + vy_) * n_ + vx_; }
+  double t_in() const { return t_in_; }
+  double t_out() const;
+
+  // Moves to the next voxel along the ray; false when the ray leaves the grid or
+  // passes its tmax.
+  bool step();
+
+  int vx() const { return vx_; }
+  int vy() const { return vy_; }
+  int vz() const { return vz_; }
+
+ private:
+  int n_ = 1;
+  int vx_ = 0, vy_ = 0, vz_ = 0;
+  int incre_x_ = 1, incre_y_ = 1, incre_z_ = 1;
+  double tx_ = kInfinity, ty_ = kInfinity, tz_ = kInfinity;
+  double dtx_ = kInfinity, dty_ = kInfinity, dtz_ = kInfinity;
+  double t_in_ = 0;
+  double t_end_ = 0;  // where the ray leaves the universe or reaches tmax
+};
+
+}  // namespace capsim

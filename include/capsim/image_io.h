@@ -1,0 +1,39 @@
+#pragma once
+// Image output, chosen by the file extension: .png is 8-bit sRGB RGB (libpng);
+// .exr is linear float R, G, B, A, Z (distance from the eye, +inf on a miss) and
+// id (float primitive index, -1 on a miss), plus any extra channels (OpenEXR).
+// The file is written under a temporary name and renamed only on success.
+//
+// These two libraries rather than OpenImageIO: linking OpenImageIO loads some
+// 250 shared libraries at every start of the program (about half a second),
+// which would cost more than tracing a megapixel.
+
+#include "capsim/render.h"
+
+#include <string>
+#include <vector>
+
+namespace capsim {
+
+struct ExtraChannel {
+  std::string name;
+  std::vector<float> values;  // width * height, row 0 at the top
+};
+
+// Throws std::runtime_error with the path and the reason on failure (unknown
+// extension, unwritable directory, library error); leaves no file behind.
+void write_image(const std::string& path, const Framebuffer& fb,
+                 const std::vector<ExtraChannel>& extra = {});
+
+// True for the extensions write_image accepts (.png, .exr; any case).
+bool is_supported_image_path(const std::string& path);
+
+// Linear [0,1] -> 8-bit sRGB, the encoding PNG output uses.
+unsigned char linear_to_srgb8(float v);
+
+// An 8-bit sRGB RGB image (3 bytes per pixel, row 0 at the top) as PNG, written
+// under a temporary name and renamed on success; throws std::runtime_error.
+void write_png_rgb8(const std::string& path, int width, int height,
+                    const std::vector<unsigned char>& rgb);
+
+}  // namespace capsim

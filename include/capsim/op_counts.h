@@ -1,0 +1,42 @@
+#pragma once
+// Operation counts a trace returns alongside its colour. The machine simulation
+// charges cycles for each of them from a cost profile; the tracer knows nothing
+// of time.
+
+#include <cstdint>
+
+namespace capsim {
+
+struct OpCounts {
+  std::uint64_t sphere_tests = 0;   // ray-sphere intersection tests
+  std::uint64_t cone_tests = 0;     // ray-cone/cylinder intersection tests
+  std::uint64_t box_tests = 0;      // ray-box intersection tests
+  std::uint64_t dda_setups = 0;     // Algorithm-2 set-ups (one per ray that meets the universe)
+  std::uint64_t dda_steps = 0;      // Algorithm-2 voxel steps
+  std::uint64_t tree_visits = 0;    // Algorithm-4 node visits (leaf toggles and operator nodes)
+  std::uint64_t hits_sorted = 0;    // crossings put in order along the ray
+  std::uint64_t shading_evals = 0;  // local illumination evaluations (one per light per hit)
+  std::uint64_t matvec = 0;         // 4x4 matrix x vector products outside the intersection
+                                    // tests (whose cost includes carrying the ray into
+                                    // object space): two per surface normal
+  std::uint64_t rays = 0;           // rays traced, all kinds
+  std::uint64_t primary_rays = 0;
+  std::uint64_t shadow_rays = 0;
+  std::uint64_t secondary_rays = 0;  // reflection and refraction
+
+  std::uint64_t intersection_tests() const { return sphere_tests + cone_tests + box_tests; }
+  OpCounts& operator+=(const OpCounts& o);
+  friend OpCounts operator+(OpCounts a, const OpCounts& b) { return a += b; }
+  bool operator==(const OpCounts&) const = default;
+};
+
+// Work done by the host's voxel generation (Algorithm-3), charged to the host.
+struct VoxelGenCounts {
+  std::uint64_t primitives = 0;     // primitives placed
+  std::uint64_t matmat = 0;         // 4x4 matrix x matrix products
+  std::uint64_t matvec = 0;         // 4x4 matrix x vector products (box corners)
+  std::uint64_t columns = 0;        // X-Y voxel columns examined
+  std::uint64_t voxel_entries = 0;  // (voxel, primitive) entries written
+};
+
+}  // namespace capsim

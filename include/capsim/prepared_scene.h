@@ -1,0 +1,38 @@
+#pragma once
+// A scene frozen for tracing: prepared primitives, the status-tree template, the
+// voxel grid, and the camera resolved. Immutable once built and shared by every
+// thread and every simulated cell.
+
+#include "capsim/status_tree.h"
+#include "capsim/voxel_grid.h"
+
+#include <vector>
+
+namespace capsim {
+
+struct PrepareOptions {
+  int grid = 0;        // divisions per axis; 0 = auto_grid_divisions
+  int width = 0;       // 0 = the camera's (or the default 512)
+  int height = 0;
+};
+
+struct PreparedScene {
+  Scene scene;                          // as parsed (materials, colours, lights)
+  Camera camera;                        // resolved: the scene's, or framed, with the size applied
+  std::vector<Light> lights;            // resolved: the scene's, or one at the eye
+  std::vector<PreparedPrimitive> prims;  // same order as scene.primitives
+  std::vector<bool> placed;             // primitive contributes to the CSG tree
+  StatusTree tree_template;
+  VoxelGrid grid;
+  VoxelGenCounts voxel_counts;          // the host's work for Algorithm-3
+};
+
+// The camera used when a scene has none: looking at the centre of the bounds from
+// direction (1, -2, 1.2) (OpenSCAD-like: from the front right, above), z up, 40
+// degree vertical field, far enough that the bounding sphere fits the view.
+Camera default_camera(const Aabb& bounds, int width, int height);
+
+// Throws SceneError for a scene with nothing to draw or a size out of range.
+PreparedScene prepare_scene(Scene scene, const PrepareOptions& options);
+
+}  // namespace capsim

@@ -1,0 +1,50 @@
+#pragma once
+// Exact ray-primitive intersection. Every primitive is a convex solid, so a line
+// meets it in one interval [t_enter, t_exit] (possibly empty); the tracer turns the
+// two ends into the boundary crossings that drive the status tree.
+
+#include "capsim/op_counts.h"
+#include "capsim/ray.h"
+#include "capsim/scene.h"
+
+namespace capsim {
+
+// A primitive ready for tracing: the inverse transform and the normal matrix are
+// computed once.
+struct PreparedPrimitive {
+  PrimitiveKind kind = PrimitiveKind::Sphere;
+  glm::dmat4 to_world{1.0};
+  glm::dmat4 to_object{1.0};
+  glm::dmat3 normal_to_world{1.0};  // inverse transpose of to_world's linear part
+  double cone_r1 = 1, cone_r2 = 1;
+  Aabb world_bounds;                // the 8 corners of the object box, transformed
+};
+
+PreparedPrimitive prepare_primitive(const Primitive& p);
+
+// The object-space bounding box of a canonical primitive (before to_world).
+Aabb object_bounds(const PreparedPrimitive& p);
+
+// Which surface of the primitive a crossing lies on (box: face 0..5 as -x,+x,-y,+y,
+// -z,+z; cone: 0 side, 1 cap z=0, 2 cap z=1; sphere: 0).
+using SurfaceId = int;
+
+struct LineSpan {
+  double t_enter = kInfinity;
+  double t_exit = -kInfinity;
+  SurfaceId enter_surface = 0;
+  SurfaceId exit_surface = 0;
+};
+
+// Intersects the whole line origin + t dir (ignoring tmin/tmax) with the solid.
+// Returns false when the line misses or only grazes it (an empty or one-point
+// interval). Counts one test of the primitive's kind and one matrix-vector product
+// for carrying the ray into object space.
+bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& span,
+                    OpCounts& ops);
+
+// The primitive's outward unit normal, in world space, at a world point on surface s.
+glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
+                        OpCounts& ops);
+
+}  // namespace capsim

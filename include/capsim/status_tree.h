@@ -1,0 +1,69 @@
+#pragma once
+// The status tree (Algorithm-4): the CSG tree stored bottom-up, operators at the
+// nodes, primitives at the leaves, each node holding
+//   Operator | PointerToParent | StatusSelf | StatusLeft | StatusRight.
+// A boundary crossing toggles its leaf and propagates toward the root, stopping at
+// the first node whose StatusSelf does not change.
+
+#include "capsim/op_counts.h"
+#include "capsim/scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace capsim {
+
+struct StatusNode {
+  CsgOp op = CsgOp::Union;
+  std::int32_t parent = -1;  // -1 at the root
+  bool parent_left = true;   // this node is its parent's left child
+  bool status_self = false;
+  bool status_left = false;
+  bool status_right = false;
+  std::uint32_t epoch = 0;  // statuses are valid only when equal to the tree's epoch
+};
+
+// Where a primitive's leaf hangs: its parent operator node and side. A primitive
+// that is the whole tree has parent -1; one that no longer contributes (inside an
+// empty-set branch that the build removed) is absent.
+struct StatusLeaf {
+  std::int32_t parent = -1;
+  bool parent_left = true;
+  bool present = false;
+};
+
+// The status tree as built from a scene's CSG tree: n-ary operators become
+// balanced chains of binary nodes, empty sets are simplified away, and every node
+// starts with all statuses false (every primitive outside; no operator is inside
+// when both of its operands are outside).
+class StatusTree {
+ public:
+  StatusTree() = default;
+  StatusTree(const CsgNode& root, std::size_t primitive_count);
+
+  // Toggles primitive p's leaf and propagates. Returns true if the root's status
+  // changed. Counts one visit for the leaf and one for each operator node reached.
+  bool toggle(std::uint32_t p, OpCounts& ops);
+
+  bool root_inside() const { return root_inside_; }
+  bool leaf_inside(std::uint32_t p) const { return leaf_epoch_[p] == epoch_ && leaf_inside_[p]; }
+  bool present(std::uint32_t p) const { return leaves_[p].present; }
+  bool empty() const { return !has_root_; }
+
+  // Back to the all-outside state of a fresh tree. O(1): every node and leaf
+  // carries the epoch its statuses belong to, and a stale one reads as outside.
+  void reset();
+
+  const std::vector<StatusNode>& nodes() const { return nodes_; }
+
+ private:
+  std::vector<StatusNode> nodes_;
+  std::vector<StatusLeaf> leaves_;
+  std::vector<char> leaf_inside_;
+  std::vector<std::uint32_t> leaf_epoch_;
+  std::uint32_t epoch_ = 1;
+  bool root_inside_ = false;
+  bool has_root_ = false;
+};
+
+}  // namespace capsim

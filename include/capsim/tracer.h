@@ -1,0 +1,84 @@
+#pragma once
+// The paper's tracer: partial evaluation of the CSG scene along a ray, voxel by
+// voxel (3DDDA + status tree), and Whitted shading on top of it. Pure: the same
+// ray always gives the same answer and the same operation counts.
+
+#include "capsim/dda.h"
+#include "capsim/prepared_scene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace capsim {
+
+struct TraceOptions {
+  bool primary_only = false;  // primary rays with local shading only: no shadow,
+                              // reflection or refraction rays
+  int max_depth = 5;          // reflection/refraction recursion limit
+};
+
+// The visible surface along a ray: the first crossing where the root status of the
+// status tree changes.
+struct Hit {
+  double t = kInfinity;
+  std::uint32_t primitive = 0;
+  glm::dvec3 point{0};
+  glm::dvec3 normal{0};  // outward normal of the CSG solid, unit length
+  bool entering = true;  // the ray goes from outside the solid to inside here
+};
+
+// What one pixel returns: linear colour, coverage, the primary ray's visible
+// distance from the eye (+inf on a miss) and primitive (-1 on a miss), and the
+// operations spent on it.
+struct PixelSample {
+  glm::dvec3 color{0};
+  float alpha = 0;
+  double depth = kInfinity;
+  int primitive = -1;
+  OpCounts ops;
+};
+
+class Tracer {
+ public:
+  // Per-thread working state: the status tree being evaluated and the mailbox of
+  // primitives already intersected by the current ray.
+  class Scratch {
+   public:
+    explicit Scratch(const PreparedScene& scene);
+    StatusTree tree;
+    std::vector<std::uint32_t> mailbox;  // ray stamp per primitive
+    std::uint32_t stamp = 0;
+    struct Crossing {
+      double t;
+      std::uint32_t primitive;
+      std::int32_t surface;
+      bool enter;  // entering the primitive; at equal t entries go first
+    };
+    std::vector<Crossing> pending;  // crossings met but not yet evaluated, latest first
+  };
+
+  Tracer(const PreparedScene& scene, TraceOptions options);
+
+  // Partial evaluation: the first root transition in (ray.tmin, ray.tmax), if any.
+  bool first_hit(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
+
+  // The primary ray through the centre of pixel (i, j), shaded.
+  PixelSample trace_pixel(int i, int j, Scratch& scratch) const;
+
+  Ray primary_ray(int i, int j) const;
+  const PreparedScene& scene() const { return scene_; }
+  const TraceOptions& options() const { return options_; }
+
+ private:
+  glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, Hit* first) const;
+  bool occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
+                OpCounts& ops) const;
+
+  const PreparedScene& scene_;
+  TraceOptions options_;
+  glm::dvec3 cam_origin_, cam_forward_, cam_right_, cam_up_;
+  double half_height_ = 1, half_width_ = 1;
+  double epsilon_ = 0;  // offset of spawned rays, relative to the universe size
+};
+
+}  // namespace capsim

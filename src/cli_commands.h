@@ -1,0 +1,17 @@
+#pragma once
+// The subcommands of the capsim command line. Each registers its options (with
+// their help text) on the app and returns the function that runs it; that
+// function returns the process exit status.
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace capsim::cli {
+
+using Command = std::function<int()>;
+
+Command add_render_command(CLI::App& app);
+Command add_simulate_command(CLI::App& app);
+
+}  // namespace capsim::cli

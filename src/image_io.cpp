@@ -1,0 +1,151 @@
+#include "capsim/image_io.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <fmt/core.h>
+#include <png.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <csetjmp>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <random>
+#include <stdexcept>
+
+namespace capsim {
+
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// A hidden name beside the target that no other writer uses; renaming it over
+// the target on success means a reader never sees a half-written image.
+std::filesystem::path temporary_beside(const std::filesystem::path& target) {
+  static thread_local std::mt19937_64 rng{std::random_device{}()};
+  return target.parent_path() / fmt::format(".{}.{:016x}.tmp", target.filename().string(), rng());
+}
+
+// Writes through write(tmp) and renames tmp to path; removes tmp on failure.
+template <class Write>
+void write_atomically(const std::string& path, Write write) {
+  const std::filesystem::path target(path);
+  const std::filesystem::path tmp = temporary_beside(target);
+  try {
+    write(tmp.string());
+    std::filesystem::rename(tmp, target);
+  } catch (...) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw;
+  }
+}
+
+// libpng reports errors by longjmp; this frame holds nothing that needs
+// destroying, so jumping out of it is safe. Returns the error text or "".
+std::string png_write_rows(std::FILE* f, int width, int height, const unsigned char* rgb) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!png) return "cannot start the PNG encoder";
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    return "PNG encoding failed";
+  }
+  png_init_io(png, f);
+  png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  png_write_info(png, info);
+  for (int j = 0; j < height; ++j)
+    png_write_row(png, const_cast<png_bytep>(rgb + static_cast<std::size_t>(j) * width * 3));
+  png_write_end(png, info);
+  png_destroy_write_struct(&png, &info);
+  return "";
+}
+
+void write_png_file(const std::string& path, int width, int height, const unsigned char* rgb) {
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
+  const std::string error = png_write_rows(f, width, height, rgb);
+  const bool closed = std::fclose(f) == 0;
+  if (!error.empty()) throw std::runtime_error(fmt::format("{}: {}", path, error));
+  if (!closed) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
+}
+
+void write_exr_file(const std::string& path, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
+  const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
+  // Planar copies, one per channel, in the order the header lists them.
+  std::vector<std::pair<std::string, std::vector<float>>> planes;
+  for (int c = 0; c < 4; ++c) {
+    std::vector<float> v(pixels);
+    for (std::size_t k = 0; k < pixels; ++k) v[k] = fb.rgba[4 * k + c];
+    planes.emplace_back(std::string(1, "RGBA"[c]), std::move(v));
+  }
+  planes.emplace_back("Z", fb.depth);
+  planes.emplace_back("id", fb.id);
+  for (const ExtraChannel& e : extra) planes.emplace_back(e.name, e.values);
+
+  Imf::Header header(fb.width, fb.height);
+  Imf::FrameBuffer frame;
+  for (auto& [name, values] : planes) {
+    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
+                                  sizeof(float) * static_cast<std::size_t>(fb.width)));
+  }
+  try {
+    Imf::OutputFile file(path.c_str(), header);
+    file.setFrameBuffer(frame);
+    file.writePixels(fb.height);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(fmt::format("{}: {}", path, e.what()));
+  }
+}
+
+}  // namespace
+
+unsigned char linear_to_srgb8(float v) {
+  if (!(v > 0)) return 0;  // also NaN
+  if (v >= 1) return 255;
+  const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+  return static_cast<unsigned char>(std::lround(s * 255.0f));
+}
+
+bool is_supported_image_path(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  return ext == ".png" || ext == ".exr";
+}
+
+void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
+  if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
+    throw std::logic_error(fmt::format("{}: {} bytes for a {}x{} RGB image", path, rgb.size(), width, height));
+  write_atomically(path, [&](const std::string& tmp) { write_png_file(tmp, width, height, rgb.data()); });
+}
+
+void write_image(const std::string& path, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
+  if (!is_supported_image_path(path))
+    throw std::runtime_error(fmt::format("{}: unsupported image type (use .png or .exr)", path));
+  const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
+  for (const ExtraChannel& c : extra)
+    if (c.values.size() != pixels)
+      throw std::logic_error(fmt::format("channel {} has {} values for {} pixels", c.name, c.values.size(), pixels));
+
+  if (lower_extension(path) == ".png") {
+    // 8-bit sRGB; the background is opaque, coverage lives in the EXR.
+    std::vector<unsigned char> rgb(pixels * 3);
+    for (std::size_t k = 0; k < pixels; ++k)
+      for (int c = 0; c < 3; ++c) rgb[3 * k + c] = linear_to_srgb8(fb.rgba[4 * k + c]);
+    write_png_rgb8(path, fb.width, fb.height, rgb);
+  } else {
+    write_atomically(path, [&](const std::string& tmp) { write_exr_file(tmp, fb, extra); });
+  }
+}
+
+}  // namespace capsim

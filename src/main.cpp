@@ -1,0 +1,35 @@
+// capsim: the Cellular Array Processor ray-tracing simulator.
+
+#include "capsim/scene.h"
+#include "cli_commands.h"
+
+#include <fmt/core.h>
+
+#include <exception>
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "capsim: a cycle-level simulator of Fujitsu's Cellular Array Processor (CAP)\n"
+      "running the CSG ray tracer of Murakami, Sato and Hirota."};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "capsim 0.1.0");
+  const capsim::cli::Command render = capsim::cli::add_render_command(app);
+  const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    if (app.got_subcommand("render")) return render();
+    if (app.got_subcommand("simulate")) return simulate();
+  } catch (const capsim::SceneError& e) {
+    fmt::print(stderr, "{}\n", e.what());  // FILE:LINE:COL: message, as compilers print
+    return 1;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "capsim: {}\n", e.what());
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,22 @@
+#include "capsim/op_counts.h"
+
+namespace capsim {
+
+OpCounts& OpCounts::operator+=(const OpCounts& o) {
+  sphere_tests += o.sphere_tests;
+  cone_tests += o.cone_tests;
+  box_tests += o.box_tests;
+  dda_setups += o.dda_setups;
+  dda_steps += o.dda_steps;
+  tree_visits += o.tree_visits;
+  hits_sorted += o.hits_sorted;
+  shading_evals += o.shading_evals;
+  matvec += o.matvec;
+  rays += o.rays;
+  primary_rays += o.primary_rays;
+  shadow_rays += o.shadow_rays;
+  secondary_rays += o.secondary_rays;
+  return *this;
+}
+
+}  // namespace capsim

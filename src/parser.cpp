@@ -1,0 +1,323 @@
+// Scene files: tokens -> module calls -> Scene. This file walks the tree of calls:
+// it applies modifiers, composes transforms, colours and materials down the
+// tree, builds the CSG nodes and collects camera, lights and background.
+// scene_modules.cpp knows what each call's arguments mean.
+
+#include "capsim/parser.h"
+
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <optional>
+
+#include "scene_args.h"
+#include "scene_lexer.h"
+#include "scene_modules.h"
+#include "scene_syntax.h"
+
+namespace capsim {
+namespace {
+
+using scene_file::Call;
+
+constexpr std::string_view kSupported =
+    "sphere, cube, cylinder, multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "intersection, group, render, color, material, camera, light, background";
+
+bool is_primitive(std::string_view n) { return n == "sphere" || n == "cube" || n == "cylinder"; }
+bool is_transform(std::string_view n) {
+  return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror";
+}
+bool is_setting(std::string_view n) { return n == "camera" || n == "light" || n == "background"; }
+bool is_object(std::string_view n) {
+  return is_primitive(n) || is_transform(n) || n == "union" || n == "difference" ||
+         n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
+}
+
+// OpenSCAD modules outside the subset, with why they are refused.
+std::optional<std::string_view> unsupported_reason(std::string_view n) {
+  for (std::string_view m : {"square", "circle", "polygon", "text", "offset", "projection"}) {
+    if (n == m) return "2D shapes are not supported";
+  }
+  for (std::string_view m : {"polyhedron", "import", "surface"}) {
+    if (n == m) return "meshes are not supported; capsim traces exact spheres, boxes and cones";
+  }
+  for (std::string_view m : {"linear_extrude", "rotate_extrude", "hull", "minkowski", "resize"}) {
+    if (n == m) return "only union, difference and intersection combine solids";
+  }
+  for (std::string_view m : {"children", "parent_module", "import_stl", "import_off", "import_dxf",
+                             "dxf_linear_extrude", "dxf_rotate_extrude"}) {
+    if (n == m) return "it is not part of a plain CSG tree";
+  }
+  return std::nullopt;
+}
+
+[[noreturn]] void refuse_module(const Call& call) {
+  if (auto reason = unsupported_reason(call.name)) {
+    throw SceneError(call.loc, fmt::format("'{}' is not supported: {}; supported: {}", call.name,
+                                           *reason, kSupported));
+  }
+  std::vector<std::string> known;
+  for (std::string_view n : {"sphere", "cube", "cylinder", "multmatrix", "translate", "rotate",
+                             "scale", "mirror", "union", "difference", "intersection", "group",
+                             "render", "color", "material", "camera", "light", "background"}) {
+    known.emplace_back(n);
+  }
+  std::string guess = scene_file::closest_name(call.name, known);
+  throw SceneError(
+      call.loc,
+      fmt::format("unknown module '{}'{}; supported: {}", call.name,
+                  guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess), kSupported));
+}
+
+// What the enclosing calls hand down to a subtree.
+struct Context {
+  glm::dmat4 transform{1.0};
+  glm::dvec3 color = Primitive{}.color;
+  double alpha = 1;
+  Material material;
+  bool dropped = false;  // inside a '%' or '*' subtree: parsed and checked, then discarded
+  std::string parent;    // enclosing call, "" at the top level
+};
+
+class Interpreter {
+ public:
+  explicit Interpreter(std::shared_ptr<const std::string> file) : file_(std::move(file)) {}
+
+  Scene run(const std::vector<Call>& calls, bool file_has_tokens, const SourceLoc& end) {
+    CsgNode root;
+    root.op = CsgOp::Union;
+    root.loc = SourceLoc{file_, 1, 1};
+    int objects = 0;
+    Context top;
+    for (const Call& call : calls) {
+      if (is_setting(call.name)) {
+        setting(call);
+        continue;
+      }
+      ++objects;
+      if (auto node = object(call, top)) root.children.push_back(std::move(*node));
+    }
+    if (objects == 0) {
+      throw SceneError(end, file_has_tokens
+                                ? fmt::format("scene has no objects; add at least one of {}",
+                                              "sphere, cube or cylinder")
+                                : "empty scene file: no objects; add at least one of sphere, cube "
+                                  "or cylinder");
+    }
+    if (root_) root.children = {std::move(*root_)};
+    // Keep only the primitives the final tree uses, numbered in file order.
+    compact(root);
+    scene_.root = std::move(root);
+    return std::move(scene_);
+  }
+
+ private:
+  void setting(const Call& call) {
+    if (!call.modifiers.empty()) {
+      throw SceneError(call.modifiers.front().loc,
+                       fmt::format("modifier '{}' applies only to objects, not to {}()",
+                                   call.modifiers.front().symbol, call.name));
+    }
+    no_children(call);
+    if (call.name == "camera") {
+      if (camera_loc_) {
+        throw SceneError(call.loc, fmt::format("at most one camera() statement is allowed; the "
+                                               "first is at {}:{}",
+                                               camera_loc_->line, camera_loc_->col));
+      }
+      scene_.camera = scene_file::read_camera(call);
+      camera_loc_ = call.loc;
+    } else if (call.name == "light") {
+      scene_.lights.push_back(scene_file::read_light(call));
+    } else {
+      if (background_loc_) {
+        throw SceneError(call.loc, fmt::format("at most one background() statement is allowed; "
+                                               "the first is at {}:{}",
+                                               background_loc_->line, background_loc_->col));
+      }
+      scene_.background = scene_file::read_background(call);
+      background_loc_ = call.loc;
+    }
+  }
+
+  void no_children(const Call& call) {
+    if (call.has_body) {
+      throw SceneError(call.body_loc, fmt::format("{}() takes no children (missing ';' after "
+                                                  "{}(...)?)",
+                                                  call.name, call.name));
+    }
+  }
+
+  // A call with its modifiers applied; empty when it contributes nothing here.
+  std::optional<CsgNode> object(const Call& call, const Context& ctx) {
+    const scene_file::Modifier* drop = nullptr;
+    const scene_file::Modifier* root = nullptr;
+    for (const auto& m : call.modifiers) {
+      if (m.symbol == '%' || m.symbol == '*') drop = drop ? drop : &m;
+      if (m.symbol == '!') root = root ? root : &m;
+      if (drop && root) {
+        throw SceneError(m.loc, fmt::format("modifiers '{}' and '{}' contradict each other",
+                                            drop->symbol, root->symbol));
+      }
+    }
+    if (is_setting(call.name)) {
+      throw SceneError(call.loc, fmt::format("{}() must be at the top level of the file, not "
+                                             "inside {}()",
+                                             call.name, ctx.parent));
+    }
+    if (root && !ctx.dropped) {
+      if (root_) {
+        throw SceneError(root->loc, fmt::format("only one '!' (root) modifier is allowed; the "
+                                                "first is at {}:{}",
+                                                root_loc_.line, root_loc_.col));
+      }
+      // As in OpenSCAD, the marked subtree alone is the scene: nothing above it
+      // (transforms, colours, materials) applies.
+      Context fresh;
+      root_loc_ = root->loc;
+      std::optional<CsgNode> node = build(call, fresh);
+      root_ = node ? std::move(*node) : empty_union(call.loc);
+      return std::nullopt;
+    }
+    if (drop) {
+      Context inner = ctx;
+      inner.dropped = true;
+      build(call, inner);
+      return std::nullopt;
+    }
+    return build(call, ctx);
+  }
+
+  std::optional<CsgNode> build(const Call& call, const Context& ctx) {
+    const std::string& name = call.name;
+    if (is_primitive(name)) {
+      no_children(call);
+      return primitive(call, ctx);
+    }
+    if (!is_object(name)) refuse_module(call);
+    Context inner = ctx;
+    inner.parent = name;
+    if (is_transform(name)) {
+      inner.transform = ctx.transform * scene_file::read_transform(call);
+      return pass_through(call, children(call, inner));
+    }
+    if (name == "color") {
+      scene_file::ColorSetting c = scene_file::read_color(call);
+      if (c.linear_rgb) inner.color = *c.linear_rgb;
+      inner.alpha = c.alpha;
+      return pass_through(call, children(call, inner));
+    }
+    if (name == "material") {
+      inner.material = scene_file::read_material(call, ctx.material);
+      return pass_through(call, children(call, inner));
+    }
+    scene_file::read_pass_through(call);
+    if (name == "render") return pass_through(call, children(call, inner));
+    CsgNode node;
+    node.op = name == "difference"     ? CsgOp::Difference
+              : name == "intersection" ? CsgOp::Intersection
+                                       : CsgOp::Union;
+    node.loc = call.loc;
+    node.children = children(call, inner);
+    return node;
+  }
+
+  std::vector<CsgNode> children(const Call& call, const Context& ctx) {
+    std::vector<CsgNode> out;
+    for (const Call& child : call.children) {
+      if (auto node = object(child, ctx)) out.push_back(std::move(*node));
+    }
+    return out;
+  }
+
+  // Transforms, colours, materials and render() are not CSG operators: one child
+  // passes through, several form their union (as in OpenSCAD).
+  CsgNode pass_through(const Call& call, std::vector<CsgNode> nodes) {
+    if (nodes.size() == 1) return std::move(nodes.front());
+    CsgNode node = empty_union(call.loc);
+    node.children = std::move(nodes);
+    return node;
+  }
+
+  CsgNode empty_union(const SourceLoc& loc) {
+    CsgNode node;
+    node.op = CsgOp::Union;
+    node.loc = loc;
+    return node;
+  }
+
+  CsgNode primitive(const Call& call, const Context& ctx) {
+    Primitive p = scene_file::read_primitive(call);
+    p.to_world = ctx.transform * p.to_world;
+    bool finite = true;
+    for (int c = 0; c < 4; ++c) {
+      for (int r = 0; r < 4; ++r) finite = finite && std::isfinite(p.to_world[c][r]);
+    }
+    if (!finite || scene_file::is_singular(p.to_world)) {
+      throw SceneError(call.loc, fmt::format("{} is placed by a singular or overflowing transform "
+                                             "(the transforms around it flatten it or exceed the "
+                                             "range of a double)",
+                                             call.name));
+    }
+    p.color = ctx.color;
+    p.alpha = ctx.alpha;
+    p.material = ctx.material;
+    all_primitives_.push_back(std::move(p));
+    CsgNode leaf;
+    leaf.is_leaf = true;
+    leaf.primitive = static_cast<int>(all_primitives_.size()) - 1;
+    leaf.loc = call.loc;
+    return leaf;
+  }
+
+  void compact(CsgNode& node) {
+    if (node.is_leaf) {
+      scene_.primitives.push_back(std::move(all_primitives_[node.primitive]));
+      node.primitive = static_cast<int>(scene_.primitives.size()) - 1;
+      return;
+    }
+    for (CsgNode& child : node.children) compact(child);
+  }
+
+  std::shared_ptr<const std::string> file_;
+  Scene scene_;
+  std::vector<Primitive> all_primitives_;  // including those of dropped subtrees
+  std::optional<CsgNode> root_;            // the '!' subtree, if any
+  SourceLoc root_loc_;
+  std::optional<SourceLoc> camera_loc_;
+  std::optional<SourceLoc> background_loc_;
+};
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& file_name) {
+  auto file = std::make_shared<const std::string>(file_name);
+  std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
+  SourceLoc end;
+  std::vector<Call> calls = scene_file::read_calls(tokens, &end);
+  return Interpreter(file).run(calls, tokens.size() > 1, end);
+}
+
+Scene parse_scene_file(const std::string& path) {
+  auto file = std::make_shared<const std::string>(path);
+  SourceLoc whole_file{file, 0, 0};
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!f) throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
+  std::string text;
+  char buffer[1 << 16];
+  for (;;) {
+    size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
+    text.append(buffer, n);
+    if (n < sizeof buffer) break;
+  }
+  if (std::ferror(f.get()))
+    throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
+  return parse_scene(text, path);
+}
+
+}  // namespace capsim

@@ -1,0 +1,90 @@
+#include "capsim/prepared_scene.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace capsim {
+
+namespace {
+
+constexpr int kMaxImageSide = 16384;
+
+SourceLoc scene_start(const Scene& scene) {
+  SourceLoc loc = scene.root.loc;
+  if (loc.line == 0) {
+    loc.line = 1;
+    loc.col = 1;
+  }
+  return loc;
+}
+
+}  // namespace
+
+Camera default_camera(const Aabb& bounds, int width, int height) {
+  Camera cam;
+  cam.width = width;
+  cam.height = height;
+  cam.fov_deg = 40;
+  cam.up = {0, 0, 1};
+  cam.center = bounds.center();
+  // OpenSCAD's default view (rotation [55, 0, 25]): from the front right, 35
+  // degrees above the X-Y plane.
+  const double pi = std::acos(-1.0);
+  const double azimuth = 25 * pi / 180, elevation = 35 * pi / 180;
+  const glm::dvec3 dir{std::sin(azimuth) * std::cos(elevation),
+                       -std::cos(azimuth) * std::cos(elevation), std::sin(elevation)};
+  const double radius = 0.5 * glm::length(bounds.extent());
+  const double half_v = 0.5 * cam.fov_deg * pi / 180;
+  const double half_h = std::atan(std::tan(half_v) * width / height);
+  const double distance = 1.05 * radius / std::sin(std::min(half_v, half_h));
+  cam.eye = cam.center + distance * dir;
+  return cam;
+}
+
+PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
+  PreparedScene ps;
+  const SourceLoc start = scene_start(scene);
+  if ((options.width != 0) != (options.height != 0) || options.width < 0 || options.height < 0 ||
+      options.width > kMaxImageSide || options.height > kMaxImageSide)
+    throw std::invalid_argument(
+        fmt::format("image size {}x{} is out of range (1 to {} per side)", options.width,
+                    options.height, kMaxImageSide));
+  if (options.grid < 0 || options.grid > kMaxGridDivisions)
+    throw std::invalid_argument(fmt::format("--grid {} is out of range (1 to {}, or auto)",
+                                            options.grid, kMaxGridDivisions));
+
+  ps.prims.reserve(scene.primitives.size());
+  for (const Primitive& p : scene.primitives) ps.prims.push_back(prepare_primitive(p));
+  ps.tree_template = StatusTree(scene.root, scene.primitives.size());
+  if (ps.tree_template.empty())
+    throw SceneError(start, "the scene has no objects to draw (every branch is empty)");
+  ps.placed.resize(ps.prims.size());
+  std::size_t placed = 0;
+  for (std::size_t i = 0; i < ps.prims.size(); ++i) {
+    ps.placed[i] = ps.tree_template.present(static_cast<std::uint32_t>(i));
+    placed += ps.placed[i];
+  }
+
+  const Aabb universe = universe_of(ps.prims, ps.placed);
+  const int n = options.grid > 0 ? options.grid : auto_grid_divisions(placed);
+  ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts);
+
+  if (scene.camera) {
+    ps.camera = *scene.camera;
+    if (options.width > 0) {
+      ps.camera.width = options.width;
+      ps.camera.height = options.height;
+    }
+  } else {
+    ps.camera = default_camera(universe, options.width > 0 ? options.width : 512,
+                               options.height > 0 ? options.height : 512);
+  }
+  ps.lights = scene.lights;
+  if (ps.lights.empty()) ps.lights.push_back({ps.camera.eye, glm::dvec3(1)});
+  ps.scene = std::move(scene);
+  return ps;
+}
+
+}  // namespace capsim

@@ -1,0 +1,54 @@
+#include "capsim/render.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+namespace capsim {
+
+Framebuffer::Framebuffer(int w, int h)
+    : width(w),
+      height(h),
+      rgba(static_cast<std::size_t>(w) * h * 4, 0.0f),
+      depth(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity()),
+      id(static_cast<std::size_t>(w) * h, -1.0f) {}
+
+void Framebuffer::set(int i, int j, const PixelSample& s) {
+  const std::size_t k = static_cast<std::size_t>(j) * width + i;
+  rgba[4 * k + 0] = static_cast<float>(s.color.x);
+  rgba[4 * k + 1] = static_cast<float>(s.color.y);
+  rgba[4 * k + 2] = static_cast<float>(s.color.z);
+  rgba[4 * k + 3] = s.alpha;
+  depth[k] = static_cast<float>(s.depth);
+  id[k] = static_cast<float>(s.primitive);
+}
+
+Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats) {
+  const Camera& cam = tracer.scene().camera;
+  Framebuffer fb(cam.width, cam.height);
+  // Per-row counts, summed in row order afterwards: the totals never depend on
+  // how rows were spread over threads.
+  std::vector<OpCounts> row_ops(cam.height);
+  tbb::enumerable_thread_specific<Tracer::Scratch> scratch(
+      [&] { return Tracer::Scratch(tracer.scene()); });
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, cam.height), [&](const tbb::blocked_range<int>& rows) {
+      Tracer::Scratch& s = scratch.local();
+      for (int j = rows.begin(); j != rows.end(); ++j)
+        for (int i = 0; i < cam.width; ++i) {
+          const PixelSample px = tracer.trace_pixel(i, j, s);
+          fb.set(i, j, px);
+          row_ops[j] += px.ops;
+        }
+    });
+  });
+  if (stats) {
+    stats->ops = {};
+    for (const OpCounts& o : row_ops) stats->ops += o;
+  }
+  return fb;
+}
+
+}  // namespace capsim

@@ -1,0 +1,296 @@
+// Recursive-descent reader for the module-call structure of scene files.
+
+#include "scene_syntax.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <string_view>
+
+namespace capsim::scene_file {
+namespace {
+
+constexpr std::string_view kPlainTree =
+    "scene files hold a plain CSG tree as 'openscad -o model.csg model.scad' writes it; "
+    "export the model with OpenSCAD first";
+
+// OpenSCAD language keywords that are statements of their own in a .scad file.
+constexpr std::array<std::string_view, 12> kLanguageKeywords = {
+    "module", "function", "if",     "else", "for",     "intersection_for",
+    "let",    "each",     "assert", "echo", "include", "use"};
+
+bool is_language_keyword(std::string_view name) {
+  for (std::string_view k : kLanguageKeywords) {
+    if (k == name) return true;
+  }
+  return false;
+}
+
+// Symbols that, right after a value, can only continue an expression.
+bool is_operator(const Token& t) {
+  static constexpr std::array<std::string_view, 19> kOps = {"+",  "-", "*",  "/",  "%",  "^",  "?",
+                                                            "<",  ">", "==", "!=", "<=", ">=", "&&",
+                                                            "||", ".", "[",  "(",  "!"};
+  if (t.kind != TokenKind::Symbol) return false;
+  for (std::string_view op : kOps) {
+    if (op == t.text) return true;
+  }
+  return false;
+}
+
+class Reader {
+ public:
+  explicit Reader(const std::vector<Token>& tokens) : tokens_(tokens) {}
+
+  std::vector<Call> file(SourceLoc* end) {
+    std::vector<Call> calls;
+    while (peek().kind != TokenKind::End) statement(calls);
+    if (end) *end = peek().loc;
+    return calls;
+  }
+
+ private:
+  const Token& peek(size_t ahead = 0) const {
+    size_t i = pos_ + ahead;
+    return i < tokens_.size() ? tokens_[i] : tokens_.back();
+  }
+  const Token& take() {
+    const Token& t = tokens_[pos_];
+    if (pos_ + 1 < tokens_.size()) ++pos_;
+    return t;
+  }
+  bool at_symbol(std::string_view s, size_t ahead = 0) const {
+    const Token& t = peek(ahead);
+    return t.kind == TokenKind::Symbol && t.text == s;
+  }
+  [[noreturn]] void fail(const Token& t, const std::string& message) const {
+    throw SceneError(t.loc, message);
+  }
+
+  // statement := ';' | '{' statement* '}' | modifier* call
+  // Appends what it reads to `out` (a bare block's statements go straight in).
+  void statement(std::vector<Call>& out) {
+    if (at_symbol(";")) {
+      take();
+      return;
+    }
+    if (at_symbol("{")) {
+      const Token& open = take();
+      block_rest(open, out);
+      return;
+    }
+    std::vector<Modifier> modifiers;
+    while (peek().kind == TokenKind::Symbol &&
+           (peek().text == "%" || peek().text == "#" || peek().text == "!" || peek().text == "*")) {
+      const Token& m = take();
+      modifiers.push_back(Modifier{m.text[0], m.loc});
+    }
+    const Token& head = peek();
+    if (head.kind != TokenKind::Identifier) {
+      if (!modifiers.empty()) {
+        fail(head, fmt::format("expected an object after modifier '{}', got {}",
+                               modifiers.back().symbol, describe(head)));
+      }
+      fail(head, fmt::format("expected an object such as sphere(), cube() or cylinder(), got {}",
+                             describe(head)));
+    }
+    if (is_language_keyword(head.text)) {
+      fail(head, fmt::format("'{}' is not supported: {}", head.text, kPlainTree));
+    }
+    if (at_symbol("=", 1)) {
+      fail(head, fmt::format("variable assignment '{} = ...' is not supported: {}", head.text,
+                             kPlainTree));
+    }
+    if (!at_symbol("(", 1)) {
+      fail(peek(1), fmt::format("expected '(' after '{}', got {}", head.text, describe(peek(1))));
+    }
+    Call call;
+    call.modifiers = std::move(modifiers);
+    call.name = head.text;
+    call.loc = head.loc;
+    take();
+    arguments(call);
+    body(call);
+    out.push_back(std::move(call));
+  }
+
+  // After an opening '{': statements up to the matching '}'.
+  void block_rest(const Token& open, std::vector<Call>& out) {
+    SourceLoc open_loc = open.loc;
+    while (!at_symbol("}")) {
+      if (peek().kind == TokenKind::End) {
+        fail(peek(), fmt::format("missing '}}': the '{{' at {}:{} is not closed", open_loc.line,
+                                 open_loc.col));
+      }
+      statement(out);
+    }
+    take();
+  }
+
+  // body := ';' | '{' statement* '}' | statement (a single child)
+  void body(Call& call) {
+    if (at_symbol(";")) {
+      take();
+      return;
+    }
+    call.has_body = true;
+    call.body_loc = peek().loc;
+    if (at_symbol("{")) {
+      const Token& open = take();
+      block_rest(open, call.children);
+      return;
+    }
+    const Token& next = peek();
+    bool starts_statement =
+        next.kind == TokenKind::Identifier ||
+        (next.kind == TokenKind::Symbol &&
+         (next.text == "%" || next.text == "#" || next.text == "!" || next.text == "*"));
+    if (!starts_statement) {
+      fail(next, fmt::format("expected ';', '{{' or a child object after {}(...), got {}",
+                             call.name, describe(next)));
+    }
+    std::vector<Call> child;
+    statement(child);
+    call.children = std::move(child);
+  }
+
+  // arguments := '(' [argument {',' argument} [',']] ')'
+  void arguments(Call& call) {
+    const Token& open = take();  // '('
+    SourceLoc open_loc = open.loc;
+    while (!at_symbol(")")) {
+      if (peek().kind == TokenKind::End) {
+        fail(peek(), fmt::format("missing ')': the '(' of {} at {}:{} is not closed", call.name,
+                                 open_loc.line, open_loc.col));
+      }
+      Argument arg;
+      if (peek().kind == TokenKind::Identifier && at_symbol("=", 1)) {
+        const Token& name = take();
+        arg.name = name.text;
+        arg.name_loc = name.loc;
+        take();  // '='
+      }
+      arg.value = value();
+      call.args.push_back(std::move(arg));
+      if (at_symbol(",")) {
+        take();
+      } else if (!at_symbol(")")) {
+        after_value(")");
+      }
+    }
+    take();  // ')'
+  }
+
+  // Something other than the expected separator follows a complete value.
+  [[noreturn]] void after_value(std::string_view closer) {
+    const Token& t = peek();
+    if (is_operator(t)) {
+      fail(t, fmt::format("expressions are not supported (found operator '{}' after a value); "
+                          "write every argument as a literal number, string, vector, true, "
+                          "false or undef",
+                          t.text));
+    }
+    if (closer == "]" && at_symbol(":")) {
+      fail(t, "ranges [start:step:end] are not supported; write the vector out");
+    }
+    if (t.kind == TokenKind::End) {
+      fail(t, fmt::format("missing '{}': expected ',' or '{}', got end of file", closer, closer));
+    }
+    fail(t, fmt::format("expected ',' or '{}', got {}", closer, describe(t)));
+  }
+
+  // value := number | '-' number | string | true | false | undef | '[' values ']'
+  Value value() {
+    const Token& t = peek();
+    Value v;
+    v.loc = t.loc;
+    switch (t.kind) {
+      case TokenKind::Number:
+        take();
+        v.kind = Value::Kind::Number;
+        v.number = t.number;
+        return v;
+      case TokenKind::String:
+        take();
+        v.kind = Value::Kind::String;
+        v.string = t.text;
+        return v;
+      case TokenKind::Identifier: return identifier_value();
+      case TokenKind::End: fail(t, "expected a value, got end of file");
+      case TokenKind::Symbol: break;
+    }
+    if (t.text == "-" && peek(1).kind == TokenKind::Number) {
+      take();
+      const Token& n = take();
+      v.kind = Value::Kind::Number;
+      v.number = -n.number;
+      return v;
+    }
+    if (t.text == "-" && peek(1).kind == TokenKind::Identifier &&
+        (peek(1).text == "inf" || peek(1).text == "nan")) {
+      fail(t,
+           fmt::format("'-{}' is not a finite number; every number must be finite", peek(1).text));
+    }
+    if (t.text == "[") {
+      take();
+      v.kind = Value::Kind::Vector;
+      while (!at_symbol("]")) {
+        if (peek().kind == TokenKind::End) {
+          fail(peek(),
+               fmt::format("missing ']': the '[' at {}:{} is not closed", v.loc.line, v.loc.col));
+        }
+        v.items.push_back(value());
+        if (at_symbol(",")) {
+          take();
+        } else if (!at_symbol("]")) {
+          after_value("]");
+        }
+      }
+      take();
+      return v;
+    }
+    if (t.text == "-" || t.text == "+" || t.text == "!" || t.text == "(") {
+      fail(t, fmt::format("expressions are not supported (found '{}'); write every argument as "
+                          "a literal number, string, vector, true, false or undef",
+                          t.text));
+    }
+    fail(t, fmt::format("expected a value, got {}", describe(t)));
+  }
+
+  Value identifier_value() {
+    const Token& t = take();
+    Value v;
+    v.loc = t.loc;
+    if (t.text == "true" || t.text == "false") {
+      v.kind = Value::Kind::Bool;
+      v.boolean = t.text == "true";
+      return v;
+    }
+    if (t.text == "undef") {
+      v.kind = Value::Kind::Undef;
+      return v;
+    }
+    if (t.text == "inf" || t.text == "nan") {
+      fail(t, fmt::format("'{}' is not a finite number; every number must be finite", t.text));
+    }
+    if (at_symbol("(")) {
+      fail(t, fmt::format("function calls are not supported ('{}(...)'); write the value as a "
+                          "literal number, string, vector, true, false or undef",
+                          t.text));
+    }
+    fail(t, fmt::format("variables are not supported ('{}'); write the value as a literal "
+                        "number, string, vector, true, false or undef",
+                        t.text));
+  }
+
+  const std::vector<Token>& tokens_;
+  size_t pos_ = 0;
+};
+
+}  // namespace
+
+std::vector<Call> read_calls(const std::vector<Token>& tokens, SourceLoc* end) {
+  return Reader(tokens).file(end);
+}
+
+}  // namespace capsim::scene_file

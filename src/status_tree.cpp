@@ -1,0 +1,154 @@
+// Algorithm-4 of the paper: the status tree, evaluated bottom-up.
+
+#include "capsim/status_tree.h"
+
+#include <algorithm>
+#include <memory>
+#include <variant>
+
+namespace capsim {
+
+namespace {
+
+bool combine(CsgOp op, bool left, bool right) {
+  switch (op) {
+    case CsgOp::Union:
+      return left || right;
+    case CsgOp::Intersection:
+      return left && right;
+    case CsgOp::Difference:
+      return left && !right;
+  }
+  return false;
+}
+
+// The CSG tree after simplification: binary operators over primitives, with no
+// empty set left anywhere (an empty result is a null pointer).
+struct Binary {
+  bool is_leaf = false;
+  std::uint32_t primitive = 0;
+  CsgOp op = CsgOp::Union;
+  std::unique_ptr<Binary> left, right;
+};
+using BinaryPtr = std::unique_ptr<Binary>;
+
+BinaryPtr make_op(CsgOp op, BinaryPtr a, BinaryPtr b) {
+  auto n = std::make_unique<Binary>();
+  n->op = op;
+  n->left = std::move(a);
+  n->right = std::move(b);
+  return n;
+}
+
+// A balanced binary tree over [first, last) under an associative operator, so
+// that a crossing climbs O(log n) nodes rather than O(n).
+BinaryPtr balanced(CsgOp op, std::vector<BinaryPtr>& items, std::size_t first, std::size_t last) {
+  if (last - first == 1) return std::move(items[first]);
+  const std::size_t mid = first + (last - first) / 2;
+  BinaryPtr a = balanced(op, items, first, mid);
+  BinaryPtr b = balanced(op, items, mid, last);
+  return make_op(op, std::move(a), std::move(b));
+}
+
+BinaryPtr simplify(const CsgNode& node) {
+  if (node.is_leaf) {
+    auto leaf = std::make_unique<Binary>();
+    leaf->is_leaf = true;
+    leaf->primitive = static_cast<std::uint32_t>(node.primitive);
+    return leaf;
+  }
+  std::vector<BinaryPtr> kids;
+  for (const CsgNode& c : node.children) kids.push_back(simplify(c));
+  switch (node.op) {
+    case CsgOp::Union: {
+      std::erase_if(kids, [](const BinaryPtr& k) { return !k; });
+      if (kids.empty()) return nullptr;
+      return balanced(CsgOp::Union, kids, 0, kids.size());
+    }
+    case CsgOp::Intersection: {
+      if (kids.empty()) return nullptr;
+      for (const BinaryPtr& k : kids)
+        if (!k) return nullptr;
+      return balanced(CsgOp::Intersection, kids, 0, kids.size());
+    }
+    case CsgOp::Difference: {
+      if (kids.empty() || !kids[0]) return nullptr;
+      BinaryPtr first = std::move(kids[0]);
+      std::vector<BinaryPtr> rest;
+      for (std::size_t i = 1; i < kids.size(); ++i)
+        if (kids[i]) rest.push_back(std::move(kids[i]));
+      if (rest.empty()) return first;
+      // A - B - C = A - (B u C).
+      return make_op(CsgOp::Difference, std::move(first), balanced(CsgOp::Union, rest, 0, rest.size()));
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+StatusTree::StatusTree(const CsgNode& root, std::size_t primitive_count)
+    : leaves_(primitive_count), leaf_inside_(primitive_count, 0), leaf_epoch_(primitive_count, 0) {
+  const BinaryPtr tree = simplify(root);
+  if (!tree) return;
+  has_root_ = true;
+  // Emit nodes top-down so a node's parent always precedes it.
+  struct Item {
+    const Binary* node;
+    std::int32_t parent;
+    bool left;
+  };
+  std::vector<Item> stack = {{tree.get(), -1, true}};
+  while (!stack.empty()) {
+    const Item it = stack.back();
+    stack.pop_back();
+    if (it.node->is_leaf) {
+      leaves_[it.node->primitive] = {it.parent, it.left, true};
+      continue;
+    }
+    const auto index = static_cast<std::int32_t>(nodes_.size());
+    nodes_.push_back({it.node->op, it.parent, it.left, false, false, false, 0});
+    stack.push_back({it.node->right.get(), index, false});
+    stack.push_back({it.node->left.get(), index, true});
+  }
+}
+
+bool StatusTree::toggle(std::uint32_t p, OpCounts& ops) {
+  ++ops.tree_visits;
+  if (leaf_epoch_[p] != epoch_) {
+    leaf_epoch_[p] = epoch_;
+    leaf_inside_[p] = 0;
+  }
+  bool value = (leaf_inside_[p] ^= 1);
+  std::int32_t at = leaves_[p].parent;
+  bool from_left = leaves_[p].parent_left;
+  while (at >= 0) {
+    ++ops.tree_visits;
+    StatusNode& node = nodes_[at];
+    if (node.epoch != epoch_) {
+      node.epoch = epoch_;
+      node.status_self = node.status_left = node.status_right = false;
+    }
+    (from_left ? node.status_left : node.status_right) = value;
+    const bool self = combine(node.op, node.status_left, node.status_right);
+    if (self == node.status_self) return false;  // the early stop of Algorithm-4
+    node.status_self = self;
+    value = self;
+    from_left = node.parent_left;
+    at = node.parent;
+  }
+  root_inside_ = value;
+  return true;
+}
+
+void StatusTree::reset() {
+  if (++epoch_ == 0) {
+    // After 2^32 resets the epochs wrap: clear them all once.
+    for (StatusNode& n : nodes_) n.epoch = 0;
+    std::fill(leaf_epoch_.begin(), leaf_epoch_.end(), 0);
+    epoch_ = 1;
+  }
+  root_inside_ = false;
+}
+
+}  // namespace capsim

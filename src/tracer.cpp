@@ -1,0 +1,193 @@
+// The tracer: partial evaluation along a ray (3DDDA + status tree, voxel by
+// voxel) and Whitted shading.
+
+#include "capsim/tracer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace capsim {
+
+namespace {
+
+using Crossing = Tracer::Scratch::Crossing;
+
+// The order crossings are evaluated in: nearest first; at equal t entries before
+// exits (solids that touch in a union leave no gap), then by primitive index, so
+// the order depends on nothing but the scene.
+bool later(const Crossing& a, const Crossing& b) {
+  if (a.t != b.t) return a.t > b.t;
+  if (a.enter != b.enter) return b.enter;
+  return a.primitive > b.primitive;
+}
+
+// Pending crossings are few (those of the primitives met so far that lie
+// beyond the current voxel), so a vector kept sorted latest-first, with the
+// nearest at the back, beats a heap.
+void insert_sorted(std::vector<Crossing>& pending, const Crossing& c) {
+  pending.insert(std::upper_bound(pending.begin(), pending.end(), c, later), c);
+}
+
+double scene_epsilon(const PreparedScene& s) {
+  return 1e-7 * glm::length(s.grid.universe.extent());
+}
+
+}  // namespace
+
+Tracer::Scratch::Scratch(const PreparedScene& scene)
+    : tree(scene.tree_template), mailbox(scene.prims.size(), 0) {}
+
+Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
+    : scene_(scene), options_(options) {
+  const Camera& c = scene.camera;
+  cam_origin_ = c.eye;
+  cam_forward_ = glm::normalize(c.center - c.eye);
+  cam_right_ = glm::normalize(glm::cross(cam_forward_, c.up));
+  cam_up_ = glm::cross(cam_right_, cam_forward_);
+  half_height_ = std::tan(0.5 * c.fov_deg * std::acos(-1.0) / 180.0);
+  half_width_ = half_height_ * static_cast<double>(c.width) / c.height;
+  epsilon_ = scene_epsilon(scene);
+}
+
+Ray Tracer::primary_ray(int i, int j) const {
+  const Camera& c = scene_.camera;
+  const double px = (2.0 * (i + 0.5) / c.width - 1.0) * half_width_;
+  const double py = (1.0 - 2.0 * (j + 0.5) / c.height) * half_height_;
+  Ray r;
+  r.origin = cam_origin_;
+  r.dir = glm::normalize(cam_forward_ + px * cam_right_ + py * cam_up_);
+  return r;
+}
+
+bool Tracer::first_hit(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
+  const VoxelGrid& grid = scene_.grid;
+  if (++s.stamp == 0) {
+    std::fill(s.mailbox.begin(), s.mailbox.end(), 0);
+    s.stamp = 1;
+  }
+  s.tree.reset();
+  s.pending.clear();
+
+  Dda3 dda;
+  if (!dda.setup(grid, ray)) return false;
+  ++ops.dda_setups;
+  do {
+    // Intersect only this voxel's primitives, each once per ray (the mailbox).
+    for (const std::uint32_t p : grid.voxel(dda.voxel())) {
+      if (s.mailbox[p] == s.stamp) continue;
+      s.mailbox[p] = s.stamp;
+      LineSpan span;
+      if (!intersect_line(scene_.prims[p], ray, span, ops)) continue;
+      if (span.t_exit <= ray.tmin || span.t_enter >= ray.tmax) continue;
+      if (span.t_enter <= ray.tmin) {
+        // The ray starts inside this primitive: its leaf is inside from the
+        // start. Every such primitive holds the start point, so it is met in the
+        // first voxel, before any crossing is evaluated.
+        s.tree.toggle(p, ops);
+      } else {
+        insert_sorted(s.pending, {span.t_enter, p, span.enter_surface, true});
+        ++ops.hits_sorted;
+      }
+      if (span.t_exit < ray.tmax) {
+        insert_sorted(s.pending, {span.t_exit, p, span.exit_surface, false});
+        ++ops.hits_sorted;
+      }
+    }
+    // Evaluate, nearest first, the crossings inside this voxel; later ones wait
+    // for their voxel, where primitives not yet met may come before them.
+    const double t_out = dda.t_out();
+    while (!s.pending.empty() && s.pending.back().t <= t_out) {
+      const Crossing c = s.pending.back();
+      s.pending.pop_back();
+      if (!s.tree.toggle(c.primitive, ops)) continue;
+      hit.t = c.t;
+      hit.primitive = c.primitive;
+      hit.point = ray.at(c.t);
+      hit.entering = s.tree.root_inside();
+      const glm::dvec3 n = world_normal(scene_.prims[c.primitive], hit.point, c.surface, ops);
+      // The primitive's outward normal, turned to be the solid's: against the
+      // ray where the ray enters the solid, along it where it leaves (surfaces
+      // that a subtracted primitive contributes face the other way).
+      const bool against = glm::dot(n, ray.dir) < 0;
+      hit.normal = (against == hit.entering) ? n : -n;
+      return true;
+    }
+    if (!dda.step()) return false;
+    ++ops.dda_steps;
+  } while (true);
+}
+
+bool Tracer::occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
+                      OpCounts& ops) const {
+  const glm::dvec3 d = to - from;
+  const double dist = glm::length(d);
+  Ray r{from, d / dist, epsilon_, dist - epsilon_};
+  ++ops.rays;
+  ++ops.shadow_rays;
+  Hit h;
+  return first_hit(r, scratch, ops, h);
+}
+
+glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops,
+                         Hit* first) const {
+  ++ops.rays;
+  Hit h;
+  if (!first_hit(ray, scratch, ops, h)) return scene_.scene.background;
+  if (first) *first = h;
+
+  const Primitive& prim = scene_.scene.primitives[h.primitive];
+  const Material& m = prim.material;
+  const glm::dvec3 facing = glm::dot(h.normal, ray.dir) < 0 ? h.normal : -h.normal;
+  const glm::dvec3 view = -ray.dir;
+
+  glm::dvec3 local = m.ambient * prim.color;
+  for (const Light& light : scene_.lights) {
+    ++ops.shading_evals;
+    const glm::dvec3 to_light = light.position - h.point;
+    const double dist = glm::length(to_light);
+    if (dist == 0) continue;
+    const glm::dvec3 l = to_light / dist;
+    const double ndl = glm::dot(facing, l);
+    if (ndl <= 0) continue;
+    if (!options_.primary_only && occluded(h.point, light.position, scratch, ops)) continue;
+    const glm::dvec3 r = glm::reflect(-l, facing);
+    const double spec = std::pow(std::max(0.0, glm::dot(r, view)), m.shininess);
+    local += light.color * (m.diffuse * ndl * prim.color + m.specular * spec);
+  }
+  if (options_.primary_only || depth >= options_.max_depth || (m.reflect == 0 && m.transmit == 0))
+    return local;
+
+  glm::dvec3 color = (1.0 - m.reflect - m.transmit) * local;
+  const glm::dvec3 mirror = glm::reflect(ray.dir, facing);
+  if (m.reflect > 0) {
+    ++ops.secondary_rays;
+    color += m.reflect * shade(Ray{h.point, mirror, epsilon_}, depth + 1, scratch, ops, nullptr);
+  }
+  if (m.transmit > 0) {
+    // Snell's law across the solid's surface; the hit says which side is inside.
+    const double eta = h.entering ? 1.0 / m.ior : m.ior;
+    const double cos_i = -glm::dot(facing, ray.dir);
+    const double k = 1.0 - eta * eta * (1.0 - cos_i * cos_i);
+    const glm::dvec3 dir = k < 0 ? mirror  // total internal reflection
+                                 : glm::normalize(eta * ray.dir + (eta * cos_i - std::sqrt(k)) * facing);
+    ++ops.secondary_rays;
+    color += m.transmit * shade(Ray{h.point, dir, epsilon_}, depth + 1, scratch, ops, nullptr);
+  }
+  return color;
+}
+
+PixelSample Tracer::trace_pixel(int i, int j, Scratch& scratch) const {
+  PixelSample s;
+  Hit h;
+  h.t = kInfinity;
+  ++s.ops.primary_rays;
+  s.color = shade(primary_ray(i, j), 0, scratch, s.ops, &h);
+  if (h.t < kInfinity) {
+    s.alpha = 1;
+    s.depth = h.t;
+    s.primitive = static_cast<int>(h.primitive);
+  }
+  return s;
+}
+
+}  // namespace capsim

@@ -1,0 +1,170 @@
+// `capsim render` end to end: outputs, option errors, and the invariances the
+// tracer promises (grid size and thread count never change the image).
+
+#include "cli_run.h"
+
+#include <OpenImageIO/imageio.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+
+using namespace capsim::testing;
+
+namespace {
+
+std::vector<std::string> shipped_scenes() {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(CAPSIM_SOURCE_DIR) + "/scenes"))
+    if (e.path().extension() == ".csg") out.push_back(e.path().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace
+
+TEST(CliRender, WritesAPng) {
+  TempDir dir;
+  const RunResult r = run_capsim("render " + scene_path("balls.csg") + " -o " + (dir / "b.png") + " --size 64x48", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto in = OIIO::ImageInput::open(dir / "b.png");
+  ASSERT_TRUE(in);
+  EXPECT_EQ(in->spec().width, 64);
+  EXPECT_EQ(in->spec().height, 48);
+  EXPECT_EQ(in->spec().nchannels, 3);
+  // Nothing but the image is left in the directory.
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 1);
+}
+
+TEST(CliRender, ExrCarriesDepthAndPrimitiveIds) {
+  TempDir dir;
+  const RunResult r = run_capsim("render " + scene_path("balls.csg") + " -o " + (dir / "b.exr") + " --size 96x96", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  auto in = OIIO::ImageInput::open(dir / "b.exr");
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  std::vector<std::string> names(spec.channelnames.begin(), spec.channelnames.end());
+  for (const char* want : {"R", "G", "B", "A", "Z", "id"})
+    ASSERT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  std::vector<float> px(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);
+  ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+  const auto ch = [&](const char* n) { return std::find(names.begin(), names.end(), n) - names.begin(); };
+  int hits = 0, misses = 0;
+  for (int k = 0; k < spec.width * spec.height; ++k) {
+    const float* p = &px[static_cast<std::size_t>(k) * spec.nchannels];
+    const float id = p[ch("id")], z = p[ch("Z")], a = p[ch("A")];
+    if (id < 0) {
+      ++misses;
+      EXPECT_EQ(id, -1.0f);
+      EXPECT_TRUE(std::isinf(z));
+      EXPECT_EQ(a, 0.0f);
+    } else {
+      ++hits;
+      EXPECT_EQ(id, std::floor(id));
+      EXPECT_LT(id, 125.0f);
+      EXPECT_GT(z, 0.0f);
+      EXPECT_TRUE(std::isfinite(z));
+      EXPECT_EQ(a, 1.0f);
+    }
+  }
+  EXPECT_GT(hits, 0);
+  EXPECT_GT(misses, 0);
+}
+
+TEST(CliRender, GridSizeNeverChangesThePixels) {
+  TempDir dir;
+  for (const std::string& scene : shipped_scenes()) {
+    std::string reference;
+    for (const char* grid : {"1", "auto", "2", "7", "33"}) {
+      const std::string out = dir / (std::string("g") + grid + ".exr");
+      const RunResult r = run_capsim("render " + scene + " -o " + out + " --grid " + grid, dir);
+      ASSERT_EQ(r.status, 0) << scene << " --grid " << grid << ": " << r.err;
+      const std::string bytes = read_file(out);
+      if (reference.empty()) {
+        reference = bytes;
+      } else {
+        EXPECT_TRUE(bytes == reference) << scene << " differs at --grid " << grid;
+      }
+    }
+  }
+}
+
+TEST(CliRender, ThreadCountNeverChangesTheBytes) {
+  TempDir dir;
+  const std::string scene = scene_path("balls.csg");
+  ASSERT_EQ(run_capsim("render " + scene + " -o " + (dir / "t1.png") + " --threads 1", dir).status, 0);
+  ASSERT_EQ(run_capsim("render " + scene + " -o " + (dir / "t2.png") + " --threads 2", dir).status, 0);
+  ASSERT_EQ(run_capsim("render " + scene + " -o " + (dir / "t0.png"), dir).status, 0);
+  EXPECT_TRUE(read_file(dir / "t1.png") == read_file(dir / "t2.png"));
+  EXPECT_TRUE(read_file(dir / "t1.png") == read_file(dir / "t0.png"));
+}
+
+TEST(CliRender, PrimaryOnlyDropsShadowsAndSecondaryRays) {
+  TempDir dir;
+  const std::string scene = scene_path("balls.csg");
+  ASSERT_EQ(run_capsim("render " + scene + " -o " + (dir / "full.png") + " --size 64x64", dir).status, 0);
+  ASSERT_EQ(run_capsim("render " + scene + " -o " + (dir / "primary.png") + " --size 64x64 --primary-only", dir).status, 0);
+  EXPECT_FALSE(read_file(dir / "full.png") == read_file(dir / "primary.png"));
+}
+
+struct BadOption {
+  std::string args;
+  std::string message;
+};
+void PrintTo(const BadOption& b, std::ostream* os) { *os << b.args; }
+
+class CliRenderRefuses : public ::testing::TestWithParam<BadOption> {};
+
+TEST_P(CliRenderRefuses, WithAMessageAndNoOutput) {
+  TempDir dir;
+  const std::string out = dir / "out.png";
+  const RunResult r = run_capsim("render " + scene_path("balls.csg") + " -o " + out + " " + GetParam().args, dir);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find(GetParam().message), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Options, CliRenderRefuses,
+    ::testing::Values(BadOption{"--size 0x10", "--size '0x10' must be positive"},
+                      BadOption{"--size 100", "--size '100' is not WxH"},
+                      BadOption{"--size 20000x10", "out of range"},
+                      BadOption{"--grid 0", "--grid 0 is out of range"},
+                      BadOption{"--grid 300", "--grid 300 is out of range"},
+                      BadOption{"--grid many", "--grid 'many' is not a whole number"},
+                      BadOption{"--threads -1", "--threads"}),
+    [](const ::testing::TestParamInfo<BadOption>& info) {
+      std::string name;
+      for (char c : info.param.args) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+      return name;
+    });
+
+TEST(CliRender, RefusesAnUnknownImageType) {
+  TempDir dir;
+  const RunResult r = run_capsim("render " + scene_path("balls.csg") + " -o " + (dir / "out.jpg"), dir);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("unsupported image type (use .png or .exr)"), std::string::npos) << r.err;
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
+}
+
+TEST(CliRender, SceneErrorsPointIntoTheFileAndWriteNothing) {
+  TempDir dir;
+  {
+    std::ofstream f(dir / "bad.csg");
+    f << "sphere(r=1);\ncube(size=[1, 2]);\n";
+  }
+  const std::string out = dir / "out.png";
+  const RunResult r = run_capsim("render " + (dir / "bad.csg") + " -o " + out, dir);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err.rfind(dir / "bad.csg:2:", 0), 0u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(CliRender, HelpDescribesEveryOption) {
+  TempDir dir;
+  const RunResult r = run_capsim("render --help", dir);
+  EXPECT_EQ(r.status, 0);
+  for (const char* opt : {"--output", "--size", "--grid", "--threads", "--primary-only"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}

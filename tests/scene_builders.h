@@ -1,0 +1,63 @@
+#pragma once
+// Small scenes built in code for unit tests.
+
+#include "capsim/prepared_scene.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace capsim::testing {
+
+inline Primitive sphere(glm::dvec3 c, double r) {
+  Primitive p;
+  p.kind = PrimitiveKind::Sphere;
+  p.to_world = glm::scale(glm::translate(glm::dmat4(1.0), c), glm::dvec3(r));
+  return p;
+}
+
+inline Primitive box(glm::dvec3 lo, glm::dvec3 size) {
+  Primitive p;
+  p.kind = PrimitiveKind::Box;
+  p.to_world = glm::scale(glm::translate(glm::dmat4(1.0), lo), size);
+  return p;
+}
+
+// Axis along +z from base, radii r1 at the base and r2 at the top.
+inline Primitive cone(glm::dvec3 base, double h, double r1, double r2) {
+  Primitive p;
+  p.kind = PrimitiveKind::Cone;
+  const double rmax = std::max(r1, r2);
+  p.to_world = glm::scale(glm::translate(glm::dmat4(1.0), base), glm::dvec3(rmax, rmax, h));
+  p.cone_r1 = r1 / rmax;
+  p.cone_r2 = r2 / rmax;
+  return p;
+}
+
+inline CsgNode leaf(int p) {
+  CsgNode n;
+  n.is_leaf = true;
+  n.primitive = p;
+  return n;
+}
+
+inline CsgNode op(CsgOp o, std::vector<CsgNode> kids) {
+  CsgNode n;
+  n.op = o;
+  n.children = std::move(kids);
+  return n;
+}
+
+// A scene of the given primitives under root (default: their union).
+inline Scene make_scene(std::vector<Primitive> prims, std::optional<CsgNode> root = std::nullopt) {
+  Scene s;
+  s.primitives = std::move(prims);
+  if (root) {
+    s.root = op(CsgOp::Union, {*root});
+  } else {
+    std::vector<CsgNode> kids;
+    for (std::size_t i = 0; i < s.primitives.size(); ++i) kids.push_back(leaf(static_cast<int>(i)));
+    s.root = op(CsgOp::Union, kids);
+  }
+  return s;
+}
+
+}  // namespace capsim::testing

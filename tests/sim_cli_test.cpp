@@ -1,0 +1,111 @@
+// `capsim simulate` end to end: the screen is byte-identical to `capsim render`,
+// every output is byte-identical across runs and host thread counts, and bad
+// options fail with a message.
+
+#include "cli_run.h"
+
+#include <nlohmann/json.hpp>
+
+using namespace capsim::testing;
+
+namespace {
+
+const std::string kBalls = scene_path("balls.csg");
+
+TEST(CliSimulate, ScreenIsByteIdenticalToRenderInEveryMode) {
+  TempDir dir;
+  ASSERT_EQ(run_capsim("render " + kBalls + " -o " + (dir / "render.png") + " --size 120x90", dir).status, 0);
+  const std::string rendered = read_file(dir / "render.png");
+  for (const std::string mode : {"dot", "line", "block"}) {
+    const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "sim.png") +
+                                       " --size 120x90 --cells 8x8 --mode " + mode, dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read_file(dir / "sim.png"), rendered) << mode;
+  }
+}
+
+TEST(CliSimulate, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
+  TempDir dir;
+  std::string first[5];
+  for (const std::string threads : {"1", "2", "2"}) {
+    const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 96x72" +
+                                       " --report " + (dir / "r.json") + " --trace " + (dir / "t.json") +
+                                       " --heatmap " + (dir / "h.png") + " --threads " + threads, dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string now[5] = {read_file(dir / "s.png"), read_file(dir / "r.json"), read_file(dir / "t.json"),
+                                read_file(dir / "h.png"), r.out};
+    if (first[0].empty()) {
+      std::copy(std::begin(now), std::end(now), std::begin(first));
+      continue;
+    }
+    for (int i = 0; i < 5; ++i) EXPECT_EQ(now[i], first[i]) << "output " << i << " with --threads " << threads;
+  }
+}
+
+TEST(CliSimulate, ReportHasTheDocumentedKeys) {
+  TempDir dir;
+  const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") +
+                                     " --size 40x30 --cells 2x3 --mode line --report " + (dir / "r.json"), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir / "r.json"));
+  EXPECT_EQ(j["mode"], "line");
+  EXPECT_EQ(j["cells_grid"], "2x3");
+  EXPECT_EQ(j["profile"], "cap");
+  EXPECT_EQ(j["clock_hz"], 8000000);
+  ASSERT_EQ(j["cells"].size(), 6u);
+  for (const char* key : {"row", "col", "pixels", "rays", "busy_cycles", "idle_cycles", "comm_cycles", "finish_cycles"})
+    EXPECT_TRUE(j["cells"][0].contains(key)) << key;
+  for (const char* key : {"intersection", "dda", "csg", "voxel_generation", "other"})
+    EXPECT_TRUE(j["breakdown"].contains(key)) << key;
+  std::uint64_t max_finish = 0;
+  for (const auto& c : j["cells"]) max_finish = std::max<std::uint64_t>(max_finish, c["finish_cycles"]);
+  EXPECT_EQ(j["total_cycles"], max_finish);
+  EXPECT_DOUBLE_EQ(j["max_seconds"].get<double>(), static_cast<double>(max_finish) / 8e6);
+  EXPECT_NE(r.out.find("d = (Max - Min) / Max"), std::string::npos);
+  EXPECT_NE(r.out.find("CSG evaluation"), std::string::npos);
+}
+
+TEST(CliSimulate, TraceHasAHostABusAndOneTrackPerCell) {
+  TempDir dir;
+  const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") +
+                                     " --size 20x20 --cells 2x2 --trace " + (dir / "t.json"), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir / "t.json"));
+  std::vector<std::string> tracks;
+  int spans = 0;
+  for (const auto& e : j["traceEvents"]) {
+    if (e["ph"] == "M" && e["name"] == "thread_name") tracks.push_back(e["args"]["name"]);
+    if (e["ph"] == "X") ++spans;
+  }
+  EXPECT_EQ(tracks, (std::vector<std::string>{"host", "command bus", "cell[0,0]", "cell[0,1]", "cell[1,0]", "cell[1,1]"}));
+  EXPECT_GT(spans, 0);
+}
+
+TEST(CliSimulate, ExrCarriesACyclesChannel) {
+  TempDir dir;
+  const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.exr") + " --size 16x16 --cells 2x2", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(read_file(dir / "s.exr").find("cycles"), std::string::npos);
+}
+
+TEST(CliSimulate, BadOptionsFailWithAMessage) {
+  TempDir dir;
+  const std::string base = "simulate " + kBalls + " -o " + (dir / "s.png") + " --size 8x8 ";
+  struct Case {
+    std::string args, message;
+  };
+  const Case cases[] = {{"--cells 0x8", "out of range"},
+                        {"--cells 33x1", "out of range"},
+                        {"--cells 8by8", "RxC"},
+                        {"--mode diagonal", "diagonal"},
+                        {"--profile no-such-profile", "cap, m380"},
+                        {"--heatmap " + (dir / "h.jpg"), ".png"}};
+  for (const Case& c : cases) {
+    const RunResult r = run_capsim(base + c.args, dir);
+    EXPECT_NE(r.status, 0) << c.args;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "s.png")) << c.args;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,302 @@
+// Unit tests of the tracer's parts: exact intersections, the 3DDDA, the status
+// tree, voxel generation and the operation counts of whole rays.
+
+#include "capsim/dda.h"
+#include "capsim/status_tree.h"
+#include "capsim/tracer.h"
+#include "scene_builders.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace capsim;
+using namespace capsim::testing;
+
+namespace {
+
+Ray ray(glm::dvec3 o, glm::dvec3 d) { return Ray{o, d, 0.0, kInfinity}; }
+
+}  // namespace
+
+TEST(PrimitiveGeometry, SphereSpanIsExact) {
+  const PreparedPrimitive p = prepare_primitive(sphere({1, 2, 3}, 2));
+  LineSpan s;
+  OpCounts ops;
+  ASSERT_TRUE(intersect_line(p, ray({1, 2, -10}, {0, 0, 1}), s, ops));
+  EXPECT_DOUBLE_EQ(s.t_enter, 11);
+  EXPECT_DOUBLE_EQ(s.t_exit, 15);
+  EXPECT_EQ(ops.sphere_tests, 1u);
+  EXPECT_FALSE(intersect_line(p, ray({3.5, 2, -10}, {0, 0, 1}), s, ops));
+  EXPECT_EQ(ops.sphere_tests, 2u);
+}
+
+TEST(PrimitiveGeometry, BoxSpanNamesTheFaces) {
+  const PreparedPrimitive p = prepare_primitive(box({0, 0, 0}, {2, 4, 6}));
+  LineSpan s;
+  OpCounts ops;
+  ASSERT_TRUE(intersect_line(p, ray({-1, 1, 1}, {1, 0, 0}), s, ops));
+  EXPECT_DOUBLE_EQ(s.t_enter, 1);
+  EXPECT_DOUBLE_EQ(s.t_exit, 3);
+  EXPECT_EQ(s.enter_surface, 0);  // -x
+  EXPECT_EQ(s.exit_surface, 1);   // +x
+  // Axis-parallel ray outside the slab of a zero direction component.
+  EXPECT_FALSE(intersect_line(p, ray({-1, 5, 1}, {1, 0, 0}), s, ops));
+  EXPECT_EQ(ops.box_tests, 2u);
+  const glm::dvec3 n = world_normal(p, {2, 1, 1}, 1, ops);
+  EXPECT_EQ(n, glm::dvec3(1, 0, 0));
+}
+
+TEST(PrimitiveGeometry, ConeSideAndCaps) {
+  // Frustum of height 2 from radius 2 at z=0 to radius 1 at z=2.
+  const PreparedPrimitive p = prepare_primitive(cone({0, 0, 0}, 2, 2, 1));
+  LineSpan s;
+  OpCounts ops;
+  // Along the x axis at z = 1: radius 1.5.
+  ASSERT_TRUE(intersect_line(p, ray({-5, 0, 1}, {1, 0, 0}), s, ops));
+  EXPECT_NEAR(s.t_enter, 3.5, 1e-12);
+  EXPECT_NEAR(s.t_exit, 6.5, 1e-12);
+  EXPECT_EQ(s.enter_surface, 0);
+  // Down the axis: through both caps.
+  ASSERT_TRUE(intersect_line(p, ray({0, 0, 5}, {0, 0, -1}), s, ops));
+  EXPECT_DOUBLE_EQ(s.t_enter, 3);
+  EXPECT_DOUBLE_EQ(s.t_exit, 5);
+  EXPECT_EQ(s.enter_surface, 2);
+  EXPECT_EQ(s.exit_surface, 1);
+  EXPECT_EQ(ops.cone_tests, 2u);
+  // A pointed cone seen from beside its apex misses above it.
+  const PreparedPrimitive pointed = prepare_primitive(cone({0, 0, 0}, 1, 1, 0));
+  EXPECT_FALSE(intersect_line(pointed, ray({-5, 0, 1.01}, {1, 0, 0}), s, ops));
+  ASSERT_TRUE(intersect_line(pointed, ray({-5, 0, 0.5}, {1, 0, 0}), s, ops));
+  EXPECT_NEAR(s.t_enter, 4.5, 1e-12);
+  // A cylinder along its own axis (A = 0, B = 0).
+  const PreparedPrimitive cyl = prepare_primitive(cone({0, 0, 0}, 3, 1, 1));
+  ASSERT_TRUE(intersect_line(cyl, ray({0.5, 0, -1}, {0, 0, 1}), s, ops));
+  EXPECT_DOUBLE_EQ(s.t_enter, 1);
+  EXPECT_DOUBLE_EQ(s.t_exit, 4);
+  EXPECT_FALSE(intersect_line(cyl, ray({1.5, 0, -1}, {0, 0, 1}), s, ops));
+}
+
+TEST(Dda3, AxisParallelRayVisitsARowOfVoxels) {
+  VoxelGrid g;
+  g.universe = {glm::dvec3(0), glm::dvec3(4)};
+  g.n = 4;
+  g.voxel_size = glm::dvec3(1);
+  g.inv_voxel_size = glm::dvec3(1);
+  Dda3 dda;
+  ASSERT_TRUE(dda.setup(g, ray({-1, 1.5, 2.5}, {1, 0, 0})));
+  std::vector<int> xs = {dda.vx()};
+  EXPECT_DOUBLE_EQ(dda.t_in(), 1);
+  EXPECT_DOUBLE_EQ(dda.t_out(), 2);
+  while (dda.step()) {
+    xs.push_back(dda.vx());
+    EXPECT_EQ(dda.vy(), 1);  // a zero direction component never changes its index
+    EXPECT_EQ(dda.vz(), 2);
+  }
+  EXPECT_EQ(xs, (std::vector<int>{0, 1, 2, 3}));
+}
+
+TEST(Dda3, DiagonalRayStepsOneAxisAtATime) {
+  VoxelGrid g;
+  g.universe = {glm::dvec3(0), glm::dvec3(8)};
+  g.n = 8;
+  g.voxel_size = glm::dvec3(1);
+  g.inv_voxel_size = glm::dvec3(1);
+  Dda3 dda;
+  ASSERT_TRUE(dda.setup(g, ray({0.5, 0.25, 0.1}, glm::normalize(glm::dvec3(1, 0.7, 0.3)))));
+  int steps = 0;
+  int prev = dda.vx() + dda.vy() + dda.vz();
+  double t_prev = dda.t_in();
+  while (dda.step()) {
+    ++steps;
+    EXPECT_EQ(dda.vx() + dda.vy() + dda.vz(), prev + 1);
+    prev = dda.vx() + dda.vy() + dda.vz();
+    EXPECT_GE(dda.t_in(), t_prev);
+    t_prev = dda.t_in();
+  }
+  EXPECT_EQ(dda.vx(), 7);
+  EXPECT_GT(steps, 7);
+  EXPECT_FALSE(dda.setup(g, ray({-1, -1, -1}, {-1, 0, 0})));
+}
+
+TEST(StatusTree, DifferenceStopsEarlyWhenStatusDoesNotChange) {
+  // (A - B): entering B while outside A changes nothing above B's parent.
+  const CsgNode root = op(CsgOp::Union, {op(CsgOp::Difference, {leaf(0), leaf(1)})});
+  StatusTree t(root, 2);
+  OpCounts ops;
+  EXPECT_FALSE(t.toggle(1, ops));  // into B: A - B stays outside
+  EXPECT_EQ(ops.tree_visits, 2u);  // leaf + the difference node, then the early stop
+  EXPECT_FALSE(t.toggle(0, ops));  // into A while in B: still outside
+  EXPECT_TRUE(t.toggle(1, ops));   // out of B while in A: now inside
+  EXPECT_TRUE(t.root_inside());
+  t.reset();
+  EXPECT_FALSE(t.root_inside());
+  EXPECT_FALSE(t.leaf_inside(0));
+  EXPECT_TRUE(t.toggle(0, ops));
+}
+
+TEST(StatusTree, EmptySetsAreSimplifiedAway) {
+  // intersection(A, group()) is empty; union with C leaves only C.
+  const CsgNode root = op(CsgOp::Union, {op(CsgOp::Intersection, {leaf(0), op(CsgOp::Union, {})}),
+                                         op(CsgOp::Difference, {op(CsgOp::Union, {}), leaf(1)}), leaf(2)});
+  StatusTree t(root, 3);
+  EXPECT_FALSE(t.present(0));
+  EXPECT_FALSE(t.present(1));
+  EXPECT_TRUE(t.present(2));
+  EXPECT_TRUE(t.nodes().empty());  // C alone is the whole tree
+  OpCounts ops;
+  EXPECT_TRUE(t.toggle(2, ops));
+  EXPECT_EQ(ops.tree_visits, 1u);
+  EXPECT_TRUE(StatusTree(op(CsgOp::Union, {op(CsgOp::Union, {})}), 0).empty());
+}
+
+TEST(Tracer, OperationCountsOfOneRayThroughOneSphere) {
+  PrepareOptions o;
+  o.grid = 1;
+  const PreparedScene ps = prepare_scene(make_scene({sphere({0, 0, 0}, 1)}), o);
+  const Tracer tracer(ps, {});
+  Tracer::Scratch s(ps);
+  OpCounts ops;
+  Hit h;
+  ASSERT_TRUE(tracer.first_hit(ray({0, 0, -5}, {0, 0, 1}), s, ops, h));
+  EXPECT_DOUBLE_EQ(h.t, 4);
+  EXPECT_EQ(h.primitive, 0u);
+  EXPECT_TRUE(h.entering);
+  EXPECT_EQ(h.normal, glm::dvec3(0, 0, -1));
+  OpCounts want;
+  want.sphere_tests = 1;
+  want.dda_setups = 1;
+  want.hits_sorted = 2;  // entry and exit
+  want.tree_visits = 1;  // the leaf is the root
+  want.matvec = 2;       // the normal: point to object space, normal to world
+  EXPECT_EQ(ops, want);
+}
+
+TEST(Tracer, PartialEvaluationStopsInTheFirstVisibleVoxel) {
+  // Two spheres one behind the other along x; 4 divisions. The far sphere's
+  // voxels are never reached.
+  PrepareOptions o;
+  o.grid = 4;
+  const PreparedScene ps = prepare_scene(make_scene({sphere({1, 0, 0}, 0.9), sphere({7, 0, 0}, 0.9)}), o);
+  const Tracer tracer(ps, {});
+  Tracer::Scratch s(ps);
+  OpCounts ops;
+  Hit h;
+  ASSERT_TRUE(tracer.first_hit(ray({-3, 0, 0}, {1, 0, 0}), s, ops, h));
+  EXPECT_EQ(h.primitive, 0u);
+  EXPECT_NEAR(h.t, 3.1, 1e-12);
+  EXPECT_EQ(ops.sphere_tests, 1u);
+  EXPECT_EQ(ops.dda_steps, 0u);
+}
+
+TEST(Tracer, RayFromInsideFindsTheExit) {
+  // Inside A - B, where B is a ball inside A: the ray from A's inside leaves
+  // the solid where it enters B.
+  const Scene sc = make_scene({box({-2, -2, -2}, {4, 4, 4}), sphere({1, 0, 0}, 0.5)},
+                              op(CsgOp::Difference, {leaf(0), leaf(1)}));
+  for (int n : {1, 3, 7}) {
+    PrepareOptions o;
+    o.grid = n;
+    const PreparedScene ps = prepare_scene(sc, o);
+    const Tracer tracer(ps, {});
+    Tracer::Scratch s(ps);
+    OpCounts ops;
+    Hit h;
+    ASSERT_TRUE(tracer.first_hit(ray({-1, 0, 0}, {1, 0, 0}), s, ops, h));
+    EXPECT_EQ(h.primitive, 1u);
+    EXPECT_NEAR(h.t, 1.5, 1e-12);
+    EXPECT_FALSE(h.entering);
+    // The solid's outward normal on the cavity wall points into the cavity.
+    EXPECT_NEAR(h.normal.x, 1.0, 1e-12);
+  }
+}
+
+TEST(Tracer, SubtractedSurfaceNormalFacesOut) {
+  // A cube with a ball bitten out of its -x face, seen from -x through the bite.
+  const Scene sc = make_scene({box({0, -1, -1}, {2, 2, 2}), sphere({0, 0, 0}, 0.5)},
+                              op(CsgOp::Difference, {leaf(0), leaf(1)}));
+  const PreparedScene ps = prepare_scene(sc, {});
+  const Tracer tracer(ps, {});
+  Tracer::Scratch s(ps);
+  OpCounts ops;
+  Hit h;
+  ASSERT_TRUE(tracer.first_hit(ray({-5, 0, 0}, {1, 0, 0}), s, ops, h));
+  EXPECT_EQ(h.primitive, 1u);
+  EXPECT_NEAR(h.t, 5.5, 1e-12);
+  EXPECT_TRUE(h.entering);
+  EXPECT_NEAR(h.normal.x, -1.0, 1e-12);
+}
+
+TEST(VoxelGeneration, IsConservativeAndTighterThanBoundingBoxes) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-4, 4), r(0.2, 1.5), ang(0, 6.283185307179586);
+  std::vector<Primitive> prims;
+  for (int i = 0; i < 30; ++i) {
+    Primitive p = i % 3 == 0 ? sphere({u(rng), u(rng), u(rng)}, r(rng))
+                  : i % 3 == 1 ? box({u(rng), u(rng), u(rng)}, {r(rng), r(rng), r(rng)})
+                               : cone({u(rng), u(rng), u(rng)}, r(rng), r(rng), i % 2 ? 0.0 : r(rng));
+    p.to_world = glm::rotate(glm::dmat4(1.0), ang(rng), glm::normalize(glm::dvec3(u(rng), u(rng), 1))) *
+                 glm::scale(glm::dmat4(1.0), glm::dvec3(1, 0.5 + r(rng), 1)) * p.to_world;
+    prims.push_back(p);
+  }
+  const Scene sc = make_scene(prims);
+  for (int n : {1, 5, 16}) {
+    PrepareOptions o;
+    o.grid = n;
+    const PreparedScene ps = prepare_scene(sc, o);
+    const VoxelGrid aabb = generate_voxels_aabb(ps.prims, ps.placed, ps.grid.universe, n);
+    EXPECT_LE(ps.grid.entries(), aabb.entries());
+    if (n == 16) EXPECT_LT(ps.grid.entries(), aabb.entries());
+    // Points on every primitive's surface lie in voxels that list it.
+    const Tracer tracer(ps, {});
+    for (std::size_t p = 0; p < ps.prims.size(); ++p) {
+      for (int k = 0; k < 200; ++k) {
+        const glm::dvec3 c = ps.prims[p].world_bounds.center();
+        const glm::dvec3 d = glm::normalize(glm::dvec3(u(rng), u(rng), u(rng)));
+        LineSpan span;
+        OpCounts ops;
+        if (!intersect_line(ps.prims[p], ray(c, d), span, ops)) continue;
+        for (double t : {span.t_enter, span.t_exit}) {
+          const glm::dvec3 q = c + t * d;
+          const glm::ivec3 v = glm::clamp(glm::ivec3(glm::floor((q - ps.grid.universe.lo) / ps.grid.voxel_size)),
+                                          glm::ivec3(0), glm::ivec3(n - 1));
+          const auto list = ps.grid.voxel(ps.grid.index(v.x, v.y, v.z));
+          EXPECT_TRUE(std::find(list.begin(), list.end(), p) != list.end())
+              << "primitive " << p << " missing from voxel " << v.x << "," << v.y << "," << v.z;
+        }
+      }
+    }
+  }
+}
+
+TEST(Tracer, GridSizeDoesNotChangeTheImage) {
+  std::vector<Primitive> prims;
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y) prims.push_back(sphere({x * 2.0, y * 2.0, 0}, 0.9));
+  prims.push_back(box({-1, -1, -1.5}, {6, 6, 0.5}));
+  prims.back().material.reflect = 0.5;
+  prims[4].material.transmit = 0.6;
+  const Scene sc = make_scene(prims);
+  std::vector<PixelSample> reference;
+  for (int n : {1, 2, 5, 13}) {
+    PrepareOptions o;
+    o.grid = n;
+    o.width = 48;
+    o.height = 32;
+    const PreparedScene ps = prepare_scene(sc, o);
+    const Tracer tracer(ps, {});
+    Tracer::Scratch s(ps);
+    std::vector<PixelSample> img;
+    for (int j = 0; j < 32; ++j)
+      for (int i = 0; i < 48; ++i) img.push_back(tracer.trace_pixel(i, j, s));
+    if (reference.empty()) {
+      reference = img;
+      continue;
+    }
+    for (std::size_t k = 0; k < img.size(); ++k) {
+      ASSERT_EQ(img[k].primitive, reference[k].primitive) << "grid " << n << " pixel " << k;
+      ASSERT_EQ(img[k].color, reference[k].color) << "grid " << n << " pixel " << k;
+      ASSERT_EQ(img[k].depth, reference[k].depth) << "grid " << n << " pixel " << k;
+    }
+  }
+}
