@@ -31,8 +31,8 @@ void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
       ->required();
   cmd.add_option("--size", o.size, "Image size WxH (default: the scene camera's, or 512x512)");
   cmd.add_option("--grid", o.grid,
-                 "Voxel grid divisions per axis, 1 to 256, or 'auto' (about twice the cube "
-                 "root of the primitive count)")
+                 "Voxel grid divisions per axis, 1 to 256, or 'auto' (twice the cube root of "
+                 "the primitive count, 8 to 64)")
       ->default_val("auto");
   cmd.add_option("--threads", o.threads, "Host threads (0 = all hardware threads); the output "
                                          "does not depend on it")

@@ -28,35 +28,41 @@ bool Dda3::setup(const VoxelGrid& grid, const Ray& ray) {
   const glm::dvec3 inv(ray.dir.x != 0 ? 1.0 / ray.dir.x : 0.0, ray.dir.y != 0 ? 1.0 / ray.dir.y : 0.0,
                        ray.dir.z != 0 ? 1.0 / ray.dir.z : 0.0);
   double t0 = ray.tmin, t1 = ray.tmax;
-  for (int a = 0; a < 3; ++a)
-    if (!clip_slab(ray.origin[a], ray.dir[a], inv[a], u.lo[a], u.hi[a], t0, t1)) return false;
+  if (!clip_slab(ray.origin.x, ray.dir.x, inv.x, u.lo.x, u.hi.x, t0, t1) ||
+      !clip_slab(ray.origin.y, ray.dir.y, inv.y, u.lo.y, u.hi.y, t0, t1) ||
+      !clip_slab(ray.origin.z, ray.dir.z, inv.z, u.lo.z, u.hi.z, t0, t1))
+    return false;
 
   n_ = grid.n;
   t_in_ = t0;
   t_end_ = t1;
   const glm::dvec3 entry = ray.at(t0);
-  int* v[3] = {&vx_, &vy_, &vz_};
-  int* incre[3] = {&incre_x_, &incre_y_, &incre_z_};
-  double* t_next[3] = {&tx_, &ty_, &tz_};
-  double* dt[3] = {&dtx_, &dty_, &dtz_};
-  for (int a = 0; a < 3; ++a) {
-    const double size = grid.voxel_size[a];
-    *v[a] = std::clamp(static_cast<int>(std::floor((entry[a] - u.lo[a]) * grid.inv_voxel_size[a])), 0,
-                       n_ - 1);
-    const double d = ray.dir[a];
-    if (d == 0) {
-      // Never crosses a plane of this axis.
-      *incre[a] = 0;
-      *t_next[a] = kInfinity;
-      *dt[a] = kInfinity;
-    } else {
-      *incre[a] = d > 0 ? 1 : -1;
-      const double plane = u.lo[a] + (*v[a] + (d > 0 ? 1 : 0)) * size;
-      *t_next[a] = (plane - ray.origin[a]) * inv[a];
-      *dt[a] = size * std::abs(inv[a]);
-    }
-  }
+  start_axis(entry.x, ray.origin.x, ray.dir.x, inv.x, u.lo.x, grid.voxel_size.x, grid.inv_voxel_size.x, vx_,
+             incre_x_, tx_, dtx_);
+  start_axis(entry.y, ray.origin.y, ray.dir.y, inv.y, u.lo.y, grid.voxel_size.y, grid.inv_voxel_size.y, vy_,
+             incre_y_, ty_, dty_);
+  start_axis(entry.z, ray.origin.z, ray.dir.z, inv.z, u.lo.z, grid.voxel_size.z, grid.inv_voxel_size.z, vz_,
+             incre_z_, tz_, dtz_);
   return true;
+}
+
+void Dda3::start_axis(double entry, double origin, double dir, double inv, double lo, double size,
+                      double inv_size, int& v, int& incre, double& t_next, double& dt) const {
+  // entry lies in the universe (up to rounding), so the offset is >= 0 or a
+  // hair below, and truncation is the floor there (it is a plain conversion,
+  // where std::floor is a library call on baseline x86-64).
+  v = std::clamp(static_cast<int>((entry - lo) * inv_size), 0, n_ - 1);
+  if (dir == 0) {
+    // Never crosses a plane of this axis.
+    incre = 0;
+    t_next = kInfinity;
+    dt = kInfinity;
+    return;
+  }
+  incre = dir > 0 ? 1 : -1;
+  const double plane = lo + (v + (dir > 0 ? 1 : 0)) * size;
+  t_next = (plane - origin) * inv;
+  dt = size * std::abs(inv);
 }
 
 double Dda3::t_out() const { return std::min({tx_, ty_, tz_, t_end_}); }

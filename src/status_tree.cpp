@@ -114,7 +114,7 @@ StatusTree::StatusTree(const CsgNode& root, std::size_t primitive_count)
 }
 
 bool StatusTree::toggle(std::uint32_t p, OpCounts& ops) {
-  ++ops.tree_visits;
+  std::uint64_t visits = 1;  // the leaf
   if (leaf_epoch_[p] != epoch_) {
     leaf_epoch_[p] = epoch_;
     leaf_inside_[p] = 0;
@@ -123,7 +123,7 @@ bool StatusTree::toggle(std::uint32_t p, OpCounts& ops) {
   std::int32_t at = leaves_[p].parent;
   bool from_left = leaves_[p].parent_left;
   while (at >= 0) {
-    ++ops.tree_visits;
+    ++visits;
     StatusNode& node = nodes_[at];
     if (node.epoch != epoch_) {
       node.epoch = epoch_;
@@ -131,12 +131,16 @@ bool StatusTree::toggle(std::uint32_t p, OpCounts& ops) {
     }
     (from_left ? node.status_left : node.status_right) = value;
     const bool self = combine(node.op, node.status_left, node.status_right);
-    if (self == node.status_self) return false;  // the early stop of Algorithm-4
+    if (self == node.status_self) {  // the early stop of Algorithm-4
+      ops.tree_visits += visits;
+      return false;
+    }
     node.status_self = self;
     value = self;
     from_left = node.parent_left;
     at = node.parent;
   }
+  ops.tree_visits += visits;
   root_inside_ = value;
   return true;
 }

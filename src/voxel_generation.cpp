@@ -238,10 +238,12 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
 }
 
 int auto_grid_divisions(std::size_t placed_primitives) {
-  // Table 4-2's optimum grows as the cube root of the object count: about twice
-  // it (16 objects: 8; 512: 16; 4096: 32; 6859: 32-48).
+  // Table 4-2's optimum grows as the cube root of the object count, about twice
+  // it (512 objects: 16; 1000: 16-32; 4096: 32; 6859: 32-48: about 8 voxels per
+  // object), and is never below 8 (16 objects: 8), where the 3DDDA is still far
+  // cheaper than the intersections it saves.
   const double n = std::round(2.0 * std::cbrt(static_cast<double>(placed_primitives)));
-  return std::clamp(static_cast<int>(n), 1, 64);
+  return std::clamp(static_cast<int>(n), 8, 64);
 }
 
 }  // namespace capsim

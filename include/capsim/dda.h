@@ -28,6 +28,11 @@ class Dda3 {
   int vz() const { return vz_; }
 
  private:
+  // The first voxel index along one axis, its increment, and the t of the next
+  // plane crossing and between crossings.
+  void start_axis(double entry, double origin, double dir, double inv, double lo, double size,
+                  double inv_size, int& v, int& incre, double& t_next, double& dt) const;
+
   int n_ = 1;
   int vx_ = 0, vy_ = 0, vz_ = 0;
   int incre_x_ = 1, incre_y_ = 1, incre_z_ = 1;
