@@ -9,13 +9,14 @@
 
 namespace capsim::sim {
 
-Cell::Cell(CellId id, const CellWindow& window, int timeline_track, const Wiring& wiring)
+Cell::Cell(CellId id, const CellWindow& window, TracedCell traced, int timeline_track,
+           const Wiring& wiring)
     : id_(id),
       window_(window),
+      traced_(std::move(traced)),
       track_(timeline_track),
       wire_(wiring),
-      bus_inbox_(wiring.kernel),
-      video_memory_(window.pixel_count(), 1) {}
+      bus_inbox_(wiring.kernel) {}
 
 Process Cell::run_frame() {
   // Every cell holds the same program and the same data (§3.3): take in what the
@@ -31,17 +32,16 @@ Process Cell::run_frame() {
   const Cycles idle_end = wire_.kernel.now();
 
   // Trace the pixels this cell's window controller shows, in order, into video
-  // memory. Nothing reaches a cell while it traces, so its clock can advance once
-  // by the cycles of all its pixels: the same time as pixel by pixel, without an
-  // event per pixel.
-  for (int k = 0; k < window_.pixel_count(); ++k) {
-    const ScreenPixel p = window_.screen_pixel(k);
-    const PixelWork& work = wire_.screen.work_at(p.x, p.y);
-    write_video_memory(k, p);
-    record_.work += work.cost;
-    record_.rays += work.rays;
-  }
-  co_await wire_.kernel.delay(record_.work.total());
+  // memory: the clock advances by the cycles of every pixel's operations. The
+  // host threads traced them ahead; nothing reaches a cell while it traces, so
+  // its clock advances once by their sum (the same time as pixel by pixel,
+  // without an event per pixel) and its video memory takes them all at the end.
+  Cycles tracing;
+  for (std::uint64_t cycles : traced_.pixel_cycles) tracing += Cycles(cycles);
+  co_await wire_.kernel.delay(tracing);
+  video_memory_ = std::move(traced_.samples);
+  record_.work = traced_.work;
+  record_.rays = traced_.rays;
   record_.pixels = static_cast<std::uint64_t>(window_.pixel_count());
   record_.busy = wire_.kernel.now() - idle_end;
   wire_.timeline.span(track_, fmt::format("trace {} pixels", record_.pixels), "compute", idle_end,
@@ -64,15 +64,6 @@ void Cell::take_in(const BusTransfer& t, std::string_view expected) {
   record_.comm += t.delivered - t.granted;
   wire_.timeline.span(track_, fmt::format("receive {}", t.label), "receive", t.granted, t.delivered,
                       t.bytes);
-}
-
-void Cell::write_video_memory(int k, ScreenPixel p) {
-  const Framebuffer& src = wire_.screen.image;
-  const std::size_t s = static_cast<std::size_t>(p.y) * src.width + p.x;
-  const std::size_t d = static_cast<std::size_t>(k);
-  std::copy_n(src.rgba.begin() + 4 * s, 4, video_memory_.rgba.begin() + 4 * d);
-  video_memory_.depth[d] = src.depth[s];
-  video_memory_.id[d] = src.id[s];
 }
 
 }  // namespace capsim::sim

@@ -6,7 +6,7 @@
 #include "event_kernel.h"
 #include "mailbox.h"
 #include "timeline.h"
-#include "traced_screen.h"
+#include "traced_cells.h"
 #include "window_controller.h"
 
 #include "capsim/render.h"
@@ -29,10 +29,11 @@ class Cell {
     EventKernel& kernel;
     CommandBus& bus;
     Timeline& timeline;
-    const TracedScreen& screen;  // the work of every pixel, traced ahead
   };
 
-  Cell(CellId id, const CellWindow& window, int timeline_track, const Wiring& wiring);
+  // traced: this cell's pixels, traced ahead by the host threads.
+  Cell(CellId id, const CellWindow& window, TracedCell traced, int timeline_track,
+       const Wiring& wiring);
 
   // The program every cell runs for one frame.
   Process run_frame();
@@ -41,18 +42,20 @@ class Cell {
   const Framebuffer& video_memory() const { return video_memory_; }
   const CellWindow& window() const { return window_; }
   const CellRecord& record() const { return record_; }
+  // The cycles each of its pixels cost, in video-memory order.
+  const std::vector<std::uint64_t>& pixel_cycles() const { return traced_.pixel_cycles; }
   CellId id() const { return id_; }
 
  private:
   void take_in(const BusTransfer& t, std::string_view expected);
-  void write_video_memory(int k, ScreenPixel p);
 
   CellId id_;
   CellWindow window_;
+  TracedCell traced_;
   int track_;
   Wiring wire_;
   Mailbox<BusTransfer> bus_inbox_;
-  Framebuffer video_memory_;  // pixel k of the window at (k, 0)
+  Framebuffer video_memory_;  // pixel k of the window at (k, 0); filled by the frame
   CellRecord record_;
 };
 

@@ -34,8 +34,8 @@ std::string sender_name(Endpoint e, const CellGrid& grid) {
 
 }  // namespace
 
-SimulationResult run_frame(const PreparedScene& scene, const TracedScreen& screen,
-                           const MachineConfig& config) {
+SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
+                           std::vector<TracedCell> traced, const MachineConfig& config) {
   const CostProfile& profile = config.profile;
   const CellGrid grid = config.cells;
   SimulationResult result;
@@ -43,7 +43,6 @@ SimulationResult run_frame(const PreparedScene& scene, const TracedScreen& scree
   result.footprint = scene_footprint(scene);
   check_cell_memory(result.footprint, profile);
 
-  const WindowLayout layout(config.mode, grid, screen.image.width, screen.image.height);
   const CostBreakdown voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.host);
 
   EventKernel kernel;
@@ -59,8 +58,8 @@ SimulationResult run_frame(const PreparedScene& scene, const TracedScreen& scree
   for (CellId id = 0; id < grid.cell_count(); ++id) {
     const CellPosition p = grid.position(id);
     const int track = timeline.add_track(fmt::format("cell[{},{}]", p.row, p.col));
-    cells.push_back(std::make_unique<Cell>(id, layout.window(id), track,
-                                           Cell::Wiring{kernel, bus, timeline, screen}));
+    cells.push_back(std::make_unique<Cell>(id, layout.window(id), std::move(traced.at(id)), track,
+                                           Cell::Wiring{kernel, bus, timeline}));
   }
 
   bus.on_delivery([&](const BusTransfer& t) {
@@ -105,9 +104,16 @@ SimulationResult run_frame(const PreparedScene& scene, const TracedScreen& scree
   }
   result.screen = compose_screen(layout, video);
 
-  result.pixel_cycles.resize(screen.work.size());
-  for (std::size_t i = 0; i < screen.work.size(); ++i)
-    result.pixel_cycles[i] = static_cast<float>(screen.work[i].cost.total().count());
+  result.pixel_cycles.assign(static_cast<std::size_t>(layout.width()) * layout.height(), 0.0f);
+  for (const auto& cell : cells) {
+    const CellWindow& w = cell->window();
+    const std::vector<std::uint64_t>& cycles = cell->pixel_cycles();
+    for (int k = 0; k < w.pixel_count(); ++k) {
+      const ScreenPixel p = w.screen_pixel(k);
+      result.pixel_cycles[static_cast<std::size_t>(p.y) * layout.width() + p.x] =
+          static_cast<float>(cycles[k]);
+    }
+  }
   return result;
 }
 
@@ -116,12 +122,13 @@ SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& confi
   const Camera& cam = tracer.scene().camera;
   // Refuse a scene that does not fit before spending time tracing it.
   check_cell_memory(scene_footprint(tracer.scene()), config.profile);
-  TracedScreen screen;
+  const WindowLayout layout(config.mode, config.cells, cam.width, cam.height);
+  std::vector<TracedCell> traced;
   {
     Progress progress("tracing", static_cast<std::uint64_t>(cam.width) * cam.height, show_progress);
-    screen = trace_screen(tracer, config.profile.cell, threads, &progress);
+    traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress);
   }
-  return run_frame(tracer.scene(), screen, config);
+  return run_frame(tracer.scene(), layout, std::move(traced), config);
 }
 
 }  // namespace capsim::sim

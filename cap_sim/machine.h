@@ -1,13 +1,13 @@
 #pragma once
 // The whole machine for one frame: host, command bus, neighbour links and an
 // R x C grid of cells, run by the event kernel. The tracing itself is done ahead
-// by host threads (trace_screen); the event loop alone decides simulated time.
+// by host threads (trace_cells); the event loop alone decides simulated time.
 
 #include "cell_grid.h"
 #include "cost_profile.h"
 #include "scene_footprint.h"
 #include "timeline.h"
-#include "traced_screen.h"
+#include "traced_cells.h"
 #include "window_controller.h"
 
 #include "capsim/prepared_scene.h"
@@ -51,11 +51,12 @@ struct SimulationResult {
 void check_cell_memory(const SceneFootprint& footprint, const CostProfile& profile);
 
 // Runs one frame on the machine with the work traced ahead.
-// Precondition: screen was traced from `scene` with config.profile's cell costs.
-SimulationResult run_frame(const PreparedScene& scene, const TracedScreen& screen,
-                           const MachineConfig& config);
+// Precondition: traced came from trace_cells on `scene` with `layout` and
+// config.profile's cell costs; layout has config's mode and grid.
+SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
+                           std::vector<TracedCell> traced, const MachineConfig& config);
 
-// trace_screen + run_frame. threads: 0 = all hardware threads; the result does not
+// trace_cells + run_frame. threads: 0 = all hardware threads; the result does not
 // depend on it. show_progress: progress on stderr (see Progress).
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
                                 bool show_progress);

@@ -3,7 +3,7 @@
 // one cell, costs 102 s with 16 spheres and 32621 s with 6859 spheres (19^3).
 // The 16 spheres stand 2 x 2 in the near face and 4 deep (docs/calibration.md
 // gives the reason and the fit of the per-ray other work). The 6859-sphere run
-// traces 1.8e9 intersections on the host: about half a minute on two cores.
+// traces 1.8e9 intersections on the host: 10 to 60 s on two cores.
 
 #include "cost_profile.h"
 #include "lattice_scene.h"

@@ -38,8 +38,8 @@ struct LineSpan {
 
 // Intersects the whole line origin + t dir (ignoring tmin/tmax) with the solid.
 // Returns false when the line misses or only grazes it (an empty or one-point
-// interval). Counts one test of the primitive's kind and one matrix-vector product
-// for carrying the ray into object space.
+// interval). Counts one test of the primitive's kind; its cost, as in the
+// paper's Table 4-1, includes carrying the ray into object space.
 bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& span,
                     OpCounts& ops);
 

@@ -1,0 +1,35 @@
+#pragma once
+// The tracing the cells will do, computed ahead of the event loop by host threads
+// (tracing is pure, so the result does not depend on the thread count): every
+// pixel's sample and its cost on a cell, grouped by the cell whose window shows
+// it, in that cell's video-memory order. The event loop then decides, in
+// simulated time, when each cell does that work and writes its video memory.
+
+#include "cost_profile.h"
+#include "window_controller.h"
+
+#include "capsim/render.h"
+#include "capsim/tracer.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace capsim::sim {
+
+class Progress;
+
+// One cell's pixels, traced: pixel k of its window at samples (k, 0), costing
+// pixel_cycles[k] on a cell; work and rays are the sums over all its pixels.
+struct TracedCell {
+  Framebuffer samples;  // as Framebuffer::set stores them
+  std::vector<std::uint64_t> pixel_cycles;
+  CostBreakdown work;  // pixel_cost() summed over the cell's pixels
+  std::uint64_t rays = 0;
+};
+
+// One entry per cell of the layout. threads: 0 = all hardware threads.
+// progress may be null.
+std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
+                                    const CellCosts& costs, int threads, Progress* progress);
+
+}  // namespace capsim::sim
