@@ -4,7 +4,7 @@
 #include "cli_options.h"
 #include "heatmap.h"
 #include "machine.h"
-#include "progress.h"
+#include "capsim/progress.h"
 #include "sim_report.h"
 #include "text_output.h"
 
@@ -81,7 +81,7 @@ Command add_simulate_command(CLI::App& app) {
     const PreparedScene scene = load_scene(*opts);
     const Tracer tracer(scene, trace_options(*opts));
     const sim::SimulationResult result =
-        sim::simulate_frame(tracer, config, opts->threads, sim::Progress::stderr_is_terminal());
+        sim::simulate_frame(tracer, config, opts->threads, Progress::stderr_is_terminal());
 
     std::vector<ExtraChannel> extra;
     if (std::filesystem::path(opts->output).extension() != ".png" &&

@@ -4,7 +4,7 @@
 #include "command_bus.h"
 #include "event_kernel.h"
 #include "host.h"
-#include "progress.h"
+#include "capsim/progress.h"
 #include "video_bus.h"
 
 #include <fmt/core.h>

@@ -1,6 +1,6 @@
 #include "traced_cells.h"
 
-#include "progress.h"
+#include "capsim/progress.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>

@@ -8,6 +8,7 @@
 #include "cost_profile.h"
 #include "window_controller.h"
 
+#include "capsim/progress.h"
 #include "capsim/render.h"
 #include "capsim/tracer.h"
 
@@ -15,8 +16,6 @@
 #include <vector>
 
 namespace capsim::sim {
-
-class Progress;
 
 // One cell's pixels, traced: pixel k of its window at samples (k, 0), costing
 // pixel_cycles[k] on a cell; work and rays are the sums over all its pixels.

@@ -16,7 +16,9 @@ Command add_render_command(CLI::App& app) {
   return [opts] {
     const PreparedScene scene = load_scene(*opts);
     const Tracer tracer(scene, trace_options(*opts));
-    const Framebuffer fb = render(tracer, opts->threads);
+    Progress progress("rendering", static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height,
+                      Progress::stderr_is_terminal());
+    const Framebuffer fb = render(tracer, opts->threads, nullptr, &progress);
     write_image(opts->output, fb);
     return 0;
   };

@@ -24,7 +24,7 @@ void Framebuffer::set(int i, int j, const PixelSample& s) {
   id[k] = static_cast<float>(s.primitive);
 }
 
-Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats) {
+Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progress* progress) {
   const Camera& cam = tracer.scene().camera;
   Framebuffer fb(cam.width, cam.height);
   // Per-row counts, summed in row order afterwards: the totals never depend on
@@ -42,6 +42,7 @@ Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats) {
           fb.set(i, j, px);
           row_ops[j] += px.ops;
         }
+      if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * cam.width);
     });
   });
   if (stats) {

@@ -2,6 +2,7 @@
 // Renders every pixel of a prepared scene with the tracer (host threads via TBB;
 // the result does not depend on the thread count).
 
+#include "capsim/progress.h"
 #include "capsim/tracer.h"
 
 #include <vector>
@@ -23,7 +24,9 @@ struct RenderStats {
   OpCounts ops;  // summed over every pixel
 };
 
-// threads: 0 = all hardware threads.
-Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats = nullptr);
+// threads: 0 = all hardware threads. progress, if given, advances by each
+// finished row's pixels.
+Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats = nullptr,
+                   Progress* progress = nullptr);
 
 }  // namespace capsim

@@ -9,7 +9,7 @@
 #include <mutex>
 #include <string>
 
-namespace capsim::sim {
+namespace capsim {
 
 class Progress {
  public:
@@ -37,4 +37,4 @@ class Progress {
   bool printed_ = false;
 };
 
-}  // namespace capsim::sim
+}  // namespace capsim

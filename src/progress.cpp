@@ -1,11 +1,11 @@
-#include "progress.h"
+#include "capsim/progress.h"
 
 #include <fmt/core.h>
 #include <unistd.h>
 
 #include <cstdio>
 
-namespace capsim::sim {
+namespace capsim {
 
 namespace {
 constexpr auto kQuietStart = std::chrono::seconds(1);
@@ -39,4 +39,4 @@ void Progress::print(std::uint64_t done) {
   std::fflush(stderr);
 }
 
-}  // namespace capsim::sim
+}  // namespace capsim
