@@ -24,7 +24,7 @@ struct Tolerance {
   double t_rel = 1e-9;       // agreement: |dt| * |dir| <= t_rel * S
   double normal = 1e-6;      // agreement: |n_tracer - n_oracle|
   double graze_rel = 1e-7;   // grazing: lengths below graze_rel * S
-  double graze_cos = 1e-6;   // grazing: |cos(normal, dir)| below this
+  double graze_cos = 1e-5;   // grazing: |cos(normal, dir)| below this
   // Near a pointed cone's apex the quadric's two roots merge, so t loses digits
   // on both sides (observed: 1e-8 relative at 1e-7 from the apex) and the
   // normal turns with the azimuth. Object-space radius r(z) of the crossing
@@ -129,19 +129,24 @@ struct Judgement {
   std::string detail;  // for a disagreement: both answers
 };
 
-// The oracle's answer jumps (hit or miss, visible primitive, side) when the ray
-// is displaced by g (world length) along a world axis: the ray passes within g of
-// a silhouette, an edge or a face it runs along, so either answer is exact for a
-// ray within rounding of the given one.
-inline bool answer_jumps_nearby(Oracle& oracle, const capsim::Ray& ray, const Visible& v, double g) {
+// Whether the oracle gives the tracer's answer (hit or miss, primitive, side,
+// and t within 1e-3 S) for the ray with its origin moved by g (world length)
+// along some world axis: then the ray passes within g of a silhouette, an edge
+// or a face it runs along, and the tracer's answer is exact for a ray within
+// rounding of the given one. (The t bound is loose because moving a ray by g
+// across a silhouette moves its crossings by up to about sqrt(g S).)
+inline bool oracle_agrees_nearby(Oracle& oracle, const capsim::Ray& ray, bool tracer_hit,
+                                 const capsim::Hit& h, double g, double scale) {
+  const double dlen = glm::length(ray.dir);
   for (int axis = 0; axis < 3; ++axis) {
     for (const double sign : {-1.0, 1.0}) {
       capsim::Ray moved = ray;
       moved.origin[axis] += sign * g;
       const Visible w = oracle.answer(moved).visible;
-      if (w.hit != v.hit) return true;
-      if (w.hit && (w.crossing.primitive != v.crossing.primitive ||
-                    w.root_entering != v.root_entering))
+      if (w.hit != tracer_hit) continue;
+      if (!w.hit) return true;
+      if (w.crossing.primitive == h.primitive && w.root_entering == h.entering &&
+          std::abs(w.crossing.t - h.t) * dlen <= 1e-3 * scale)
         return true;
     }
   }
@@ -167,22 +172,26 @@ inline Judgement judge(const OracleAnswer& a, Oracle& oracle, bool tracer_hit,
   }
   if (same) return j;
 
-  // An ill-conditioned crossing in the stretch of the ray between the two
-  // answers (a miss answers tmax).
+  // An ill-conditioned crossing at either answer (a miss answers tmax) or at the
+  // ray's start.
   const double t_oracle = v.hit ? v.crossing.t : ray.tmax;
   const double t_tracer = tracer_hit ? h.t : ray.tmax;
-  const double lo = std::min(t_oracle, t_tracer) - g_t;
-  const double hi = std::max(t_oracle, t_tracer) + g_t;
   const std::vector<Crossing> all = crossings_after(a.spans, ray.tmin);
   for (std::size_t i = 0; i < all.size(); ++i) {
-    if (all[i].t < lo || all[i].t > hi) continue;
-    if (ambiguous(all[i], all, i, a.spans, prims, ray, g_t, tol)) {
+    const double t = all[i].t;
+    const bool near = std::abs(t - t_oracle) <= g_t || std::abs(t - t_tracer) <= g_t ||
+                      t - ray.tmin <= g_t;
+    if (near && ambiguous(all[i], all, i, a.spans, prims, ray, g_t, tol)) {
       j.verdict = Verdict::Grazing;
       return j;
     }
   }
-  // Or an answer that changes within a grazing distance of the ray.
-  if (answer_jumps_nearby(oracle, ray, v, tol.graze_rel * scale)) {
+  // Or, where the answers differ in kind (hit or miss, primitive, side), the
+  // tracer's answer is the oracle's for a ray within a grazing distance.
+  const bool same_kind = v.hit == tracer_hit && (!v.hit || (v.crossing.primitive == h.primitive &&
+                                                            v.root_entering == h.entering));
+  if (!same_kind &&
+      oracle_agrees_nearby(oracle, ray, tracer_hit, h, tol.graze_rel * scale, scale)) {
     j.verdict = Verdict::Grazing;
     return j;
   }

@@ -303,7 +303,7 @@ inline capsim::Ray random_ray(Rng& rng, const capsim::Scene& scene, const capsim
     }
     case RayKind::Silhouette: {
       // Tangent to a primitive's surface at a random point, moved off it along the
-      // normal by 1e-15 .. 1e-5 of the universe's size, either way: rays that
+      // normal by 1e-15 .. 1e-3 of the universe's size, either way: rays that
       // skim spheres and cones and run along box faces, where the exact answer
       // hangs on rounding and the grazing tolerance is exercised.
       const capsim::Primitive& prim = pick(rng, scene);
@@ -312,18 +312,18 @@ inline capsim::Ray random_ray(Rng& rng, const capsim::Scene& scene, const capsim
       const glm::dvec3 p(prim.to_world * glm::dvec4(sp.p, 1.0));
       const glm::dvec3 t = glm::normalize(glm::dvec3(prim.to_world * glm::dvec4(tangent, 0.0)));
       const glm::dvec3 n = glm::normalize(glm::transpose(glm::inverse(glm::dmat3(prim.to_world))) * sp.n);
-      const double offset = (rng.chance(0.5) ? 1 : -1) * std::pow(10.0, rng.uniform(-15, -5)) * 2 * radius;
+      const double offset = (rng.chance(0.5) ? 1 : -1) * std::pow(10.0, rng.uniform(-15, -3)) * 2 * radius;
       ray.origin = p + offset * n - (2 * radius + 1) * t;
       ray.dir = t * length;
       break;
     }
     case RayKind::Edge: {
-      // Through a point 1e-15 .. 1e-5 of the universe's size from an edge, a
+      // Through a point 1e-15 .. 1e-3 of the universe's size from an edge, a
       // rim or an apex, in any direction: the surface hit, and so the normal, is
       // ambiguous there although the distance is not.
       const capsim::Primitive& prim = pick(rng, scene);
       const glm::dvec3 p(prim.to_world * glm::dvec4(point_on_edge(rng, prim), 1.0));
-      const double offset = std::pow(10.0, rng.uniform(-15, -5)) * 2 * radius;
+      const double offset = std::pow(10.0, rng.uniform(-15, -3)) * 2 * radius;
       const glm::dvec3 d = rng.unit_vector();
       ray.origin = p + offset * rng.unit_vector() - (2 * radius + 1) * d;
       ray.dir = d * length;

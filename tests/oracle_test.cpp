@@ -122,10 +122,6 @@ Case make_case(int index, int rays) {
   return c;
 }
 
-struct Failure {
-  std::string text;
-};
-
 // The tracer's verdicts, in total and by kind of ray.
 struct Tally {
   Counts total;
@@ -148,7 +144,7 @@ std::vector<OracleAnswer> oracle_answers(Oracle& oracle, const Case& c) {
 // judges each answer against the oracle's (which the self-checks below build
 // from a deliberately falsified scene).
 Tally check_case(const Case& c, Oracle& oracle, const std::vector<OracleAnswer>& answers, int grid,
-                 std::vector<Failure>* failures, std::size_t max_failures = 3) {
+                 std::vector<std::string>* failures, std::size_t max_failures = 3) {
   capsim::PrepareOptions options;
   options.grid = grid;
   options.width = 64;
@@ -166,8 +162,8 @@ Tally check_case(const Case& c, Oracle& oracle, const std::vector<OracleAnswer>&
     tally(tally_out.total, answers[k], j);
     tally(tally_out.by_kind[static_cast<int>(kind_of_ray(static_cast<int>(k)))], answers[k], j);
     if (j.verdict == Verdict::Disagree && failures && failures->size() < max_failures)
-      failures->push_back({fmt::format("grid {} (tracer's n = {}), ray {}:\n{}\n", grid,
-                                       prepared.grid.n, k, j.detail)});
+      failures->push_back(fmt::format("grid {} (tracer's n = {}), ray {}:\n{}\n", grid,
+                                      prepared.grid.n, k, j.detail));
   }
   return tally_out;
 }
@@ -346,7 +342,7 @@ TEST(OracleTracer, RandomCsgTreesAgreeWithRothClassification) {
   std::array<int, 3> ops{}, kinds{};
   int empty_groups = 0, cones_pointed = 0, starts_inside = 0;
   std::size_t max_prims = 0;
-  std::vector<Failure> failures;
+  std::vector<std::string> failures;
   for (int i = 0; i < kTrees; ++i) {
     const Case c = make_case(i, kRaysPerTree);
     Oracle oracle(c.prims, c.random.scene.root);
@@ -359,14 +355,14 @@ TEST(OracleTracer, RandomCsgTreesAgreeWithRothClassification) {
       if (p.kind == capsim::PrimitiveKind::Cone && (p.r1 == 0 || p.r2 == 0)) ++cones_pointed;
     for (const OracleAnswer& a : answers) starts_inside += a.visible.starts_inside;
     for (std::size_t g = 0; g < kGrids.size(); ++g) {
-      std::vector<Failure> here;
+      std::vector<std::string> here;
       const Tally t = check_case(c, oracle, answers, kGrids[g], &here);
       by_grid[g] += t.total;
       all += t;
       if (!here.empty() && failures.size() < 10) {
         std::string text = fmt::format("tree {} (seed {:#x}):\n{}", i, kSeed + i, csg_text(c.random.scene));
-        for (const Failure& f : here) text += f.text;
-        failures.push_back({text});
+        for (const std::string& f : here) text += f;
+        failures.push_back(text);
       }
     }
   }
@@ -392,7 +388,7 @@ TEST(OracleTracer, RandomCsgTreesAgreeWithRothClassification) {
              "{}/{}/{}; sphere/box/cone {}/{}/{} ({} pointed); empty groups {}; max primitives {}\n",
              depths[1], depths[2], depths[3], depths[4], depths[5], depths[6], ops[0], ops[1],
              ops[2], kinds[0], kinds[1], kinds[2], cones_pointed, empty_groups, max_prims);
-  for (const Failure& f : failures) fmt::print("DISAGREEMENT in {}\n", f.text);
+  for (const std::string& f : failures) fmt::print("DISAGREEMENT in {}\n", f);
 
   // What the test promises to have covered.
   EXPECT_EQ(total.rays, std::uint64_t{kTrees} * kRaysPerTree * kGrids.size());
