@@ -41,18 +41,17 @@ bool slab(double o, double d, double a, double b, double& t0, double& t1) {
 }
 
 bool intersect_sphere(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {
+  // Solved about the line's closest point to the centre, p = o + tc d: then
+  // |o + t d|^2 = 1 becomes a (t - tc)^2 = 1 - |p|^2, which keeps its digits
+  // when the origin is far away (b^2 - a c would cancel).
   const double a = glm::dot(d, d);
-  const double b = glm::dot(o, d);
-  const double c = glm::dot(o, o) - 1.0;
-  const double disc = b * b - a * c;
-  if (!(disc > 0)) return false;
-  // The numerically stable pair of roots (no cancellation between b and sqrt(disc)).
-  const double q = -(b + std::copysign(std::sqrt(disc), b));
-  double t0 = q / a;
-  double t1 = c / q;
-  if (t0 > t1) std::swap(t0, t1);
-  s = {t0, t1, 0, 0};
-  return t0 < t1;
+  const double tc = -glm::dot(o, d) / a;
+  const glm::dvec3 p = o + tc * d;
+  const double h2 = (1.0 - glm::dot(p, p)) / a;
+  if (!(h2 > 0)) return false;
+  const double h = std::sqrt(h2);
+  s = {tc - h, tc + h, 0, 0};
+  return s.t_enter < s.t_exit;
 }
 
 bool intersect_box(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {

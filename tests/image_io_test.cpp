@@ -1,0 +1,114 @@
+// Image output: the sRGB encoding, PNG and EXR contents read back by an
+// independent reader (OpenImageIO), and failures that leave nothing behind.
+
+#include "capsim/image_io.h"
+#include "cli_run.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+
+using namespace capsim;
+using namespace capsim::testing;
+
+namespace {
+
+// The definition of the 8-bit sRGB encoding, written out independently.
+unsigned char srgb8_by_formula(float v) {
+  if (!(v > 0)) return 0;
+  if (v >= 1) return 255;
+  const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+  return static_cast<unsigned char>(std::lround(s * 255.0f));
+}
+
+}  // namespace
+
+TEST(ImageIo, Srgb8TableEqualsTheFormula) {
+  // Every 61st float from 0 up to past 1, and both neighbours of every step.
+  for (std::uint32_t bits = 0; bits < 0x3f900000u; bits += 61) {
+    float v;
+    std::memcpy(&v, &bits, sizeof v);
+    ASSERT_EQ(linear_to_srgb8(v), srgb8_by_formula(v)) << v;
+  }
+  for (int b = 1; b < 256; ++b) {
+    float lo = 0, hi = 1;
+    while (std::nextafter(lo, 1.0f) < hi) {
+      const float mid = lo + (hi - lo) / 2;
+      (srgb8_by_formula(mid) >= b ? hi : lo) = mid;
+    }
+    EXPECT_EQ(linear_to_srgb8(hi), srgb8_by_formula(hi));
+    EXPECT_EQ(linear_to_srgb8(lo), srgb8_by_formula(lo));
+  }
+  EXPECT_EQ(linear_to_srgb8(std::nanf("")), 0);
+  EXPECT_EQ(linear_to_srgb8(-1.0f), 0);
+  EXPECT_EQ(linear_to_srgb8(INFINITY), 255);
+}
+
+TEST(ImageIo, PngHoldsTheEncodedBytes) {
+  TempDir dir;
+  Framebuffer fb(3, 2);
+  const float values[6] = {0.0f, 0.001f, 0.18f, 0.5f, 0.9f, 1.5f};
+  for (int k = 0; k < 6; ++k)
+    for (int c = 0; c < 3; ++c) fb.rgba[4 * k + c] = values[(k + c) % 6];
+  write_image(dir / "x.png", fb);
+  auto in = OIIO::ImageInput::open(dir / "x.png");
+  ASSERT_TRUE(in);
+  ASSERT_EQ(in->spec().nchannels, 3);
+  std::vector<unsigned char> px(18);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+  for (int k = 0; k < 6; ++k)
+    for (int c = 0; c < 3; ++c) EXPECT_EQ(px[3 * k + c], linear_to_srgb8(values[(k + c) % 6]));
+}
+
+TEST(ImageIo, ExrHoldsEveryChannelExactly) {
+  TempDir dir;
+  Framebuffer fb(2, 2);
+  PixelSample hit;
+  hit.color = {0.25, 2.5, 1e-3};
+  hit.alpha = 1;
+  hit.depth = 12.5;
+  hit.primitive = 7;
+  fb.set(1, 0, hit);
+  write_image(dir / "x.exr", fb, {{"cycles", {1, 2, 3, 16777216}}});
+  auto in = OIIO::ImageInput::open(dir / "x.exr");
+  ASSERT_TRUE(in);
+  const OIIO::ImageSpec& spec = in->spec();
+  ASSERT_EQ(spec.nchannels, 7);
+  std::vector<float> px(4 * 7);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 7, OIIO::TypeDesc::FLOAT, px.data()));
+  const auto at = [&](int k, const std::string& name) {
+    const auto c = std::find(spec.channelnames.begin(), spec.channelnames.end(), name) - spec.channelnames.begin();
+    return px[static_cast<std::size_t>(k) * 7 + c];
+  };
+  EXPECT_EQ(at(1, "R"), 0.25f);
+  EXPECT_EQ(at(1, "G"), 2.5f);
+  EXPECT_EQ(at(1, "A"), 1.0f);
+  EXPECT_EQ(at(1, "Z"), 12.5f);
+  EXPECT_EQ(at(1, "id"), 7.0f);
+  EXPECT_EQ(at(0, "id"), -1.0f);
+  EXPECT_TRUE(std::isinf(at(0, "Z")));
+  EXPECT_EQ(at(3, "cycles"), 16777216.0f);
+}
+
+TEST(ImageIo, FailureLeavesNoFile) {
+  TempDir dir;
+  Framebuffer fb(2, 2);
+  EXPECT_THROW(write_image(dir / "missing/x.png", fb), std::runtime_error);
+  EXPECT_THROW(write_image(dir / "missing/x.exr", fb), std::runtime_error);
+  EXPECT_THROW(write_image(dir / "x.tiff", fb), std::runtime_error);
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
+}
+
+TEST(ImageIo, EqualImagesGiveEqualBytes) {
+  TempDir dir;
+  Framebuffer fb(4, 4);
+  write_image(dir / "a.exr", fb);
+  write_image(dir / "b.exr", fb);
+  write_image(dir / "a.png", fb);
+  write_image(dir / "b.png", fb);
+  EXPECT_TRUE(read_file(dir / "a.exr") == read_file(dir / "b.exr"));
+  EXPECT_TRUE(read_file(dir / "a.png") == read_file(dir / "b.png"));
+}
