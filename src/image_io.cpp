@@ -15,6 +15,7 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
+#include <cstdint>
 #include <filesystem>
 #include <random>
 #include <stdexcept>
@@ -127,9 +128,7 @@ unsigned char encode_srgb8(float v) {
   return static_cast<unsigned char>(std::lround(s * 255.0f));
 }
 
-// thresholds[b] is the least float whose encoding is at least b (b = 1..255):
-// the encoding is monotonic, so a binary search over these 255 floats gives
-// exactly encode_srgb8 without a pow per channel.
+// thresholds[b] is the least float whose encoding is at least b (b = 1..255).
 std::array<float, 256> srgb8_thresholds() {
   std::array<float, 256> t{};
   t[0] = -std::numeric_limits<float>::infinity();
@@ -145,14 +144,50 @@ std::array<float, 256> srgb8_thresholds() {
   return t;
 }
 
+// The encoding by table: floats in [0, 1) fall into 16256 buckets by their top
+// 16 bits (sign, exponent and 7 mantissa bits). No bucket spans more than one
+// step of the encoding, so a bucket's first code and the threshold of the next
+// code give the exact result with one comparison. The encoding is monotonic,
+// and the buckets are built from its thresholds, so the table reproduces
+// encode_srgb8 bit for bit (the construction checks the one-step property).
+class Srgb8Table {
+ public:
+  Srgb8Table() {
+    const std::array<float, 256> t = srgb8_thresholds();
+    for (std::uint32_t b = 0; b < kBuckets; ++b) {
+      const float first = float_of(b << 16), last = float_of((b << 16) | 0xffffu);
+      const auto code = static_cast<int>(std::upper_bound(t.begin() + 1, t.end(), first) - t.begin() - 1);
+      code_[b] = static_cast<unsigned char>(code);
+      next_[b] = code < 255 ? t[code + 1] : std::numeric_limits<float>::infinity();
+      if (code < 254 && last >= t[code + 2])
+        throw std::logic_error("sRGB table: a bucket spans two steps of the encoding");
+    }
+  }
+  unsigned char operator()(float v) const {
+    if (!(v > 0)) return 0;  // also NaN
+    if (v >= 1) return 255;
+    std::uint32_t bits;
+    std::memcpy(&bits, &v, sizeof bits);
+    const std::uint32_t b = bits >> 16;
+    return static_cast<unsigned char>(code_[b] + (v >= next_[b] ? 1 : 0));
+  }
+
+ private:
+  static constexpr std::uint32_t kBuckets = 0x3f80;  // the top 16 bits of 1.0f
+  static float float_of(std::uint32_t bits) {
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+  }
+  std::array<unsigned char, kBuckets> code_{};
+  std::array<float, kBuckets> next_{};
+};
+
 }  // namespace
 
 unsigned char linear_to_srgb8(float v) {
-  static const std::array<float, 256> thresholds = srgb8_thresholds();
-  if (!(v > 0)) return 0;  // also NaN
-  // The number of thresholds at or below v, less the sentinel.
-  return static_cast<unsigned char>(std::upper_bound(thresholds.begin() + 1, thresholds.end(), v) -
-                                    thresholds.begin() - 1);
+  static const Srgb8Table table;
+  return table(v);
 }
 
 bool is_supported_image_path(const std::string& path) {

@@ -54,6 +54,18 @@ bool intersect_sphere(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {
   return s.t_enter < s.t_exit;
 }
 
+// The same about a centre at the origin in world units: |o + t d|^2 = r^2.
+bool intersect_round_sphere(const glm::dvec3& o, const glm::dvec3& d, double r2, LineSpan& s) {
+  const double a = glm::dot(d, d);
+  const double tc = -glm::dot(o, d) / a;
+  const glm::dvec3 p = o + tc * d;
+  const double h2 = (r2 - glm::dot(p, p)) / a;
+  if (!(h2 > 0)) return false;
+  const double h = std::sqrt(h2);
+  s = {tc - h, tc + h, 0, 0};
+  return s.t_enter < s.t_exit;
+}
+
 bool intersect_box(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {
   double t_enter = -kInfinity, t_exit = kInfinity;
   int enter_face = 0, exit_face = 0;
@@ -169,11 +181,25 @@ PreparedPrimitive prepare_primitive(const Primitive& prim) {
   p.cone_r2 = prim.cone_r2;
   for (const glm::dvec3& c : box_corners(object_bounds(p)))
     p.world_bounds.extend(transform_point(p.to_world, c));
+  if (p.kind == PrimitiveKind::Sphere) {
+    // A similarity's linear part A has A^T A = s^2 I; the test is exact, so only
+    // transforms that are similarities to the last bit take the world-space path.
+    const glm::dmat3 a(p.to_world);
+    const glm::dmat3 g = glm::transpose(a) * a;
+    p.round_sphere = g[0][1] == 0 && g[0][2] == 0 && g[1][2] == 0 && g[0][0] == g[1][1] &&
+                     g[1][1] == g[2][2];
+    p.center = glm::dvec3(p.to_world[3]);
+    p.radius = std::sqrt(g[0][0]);
+  }
   return p;
 }
 
 bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& span,
                     OpCounts& ops) {
+  if (p.round_sphere) {
+    ++ops.sphere_tests;
+    return intersect_round_sphere(world_ray.origin - p.center, world_ray.dir, p.radius * p.radius, span);
+  }
   const glm::dvec3 o = transform_point(p.to_object, world_ray.origin);
   const glm::dvec3 d = transform_vector(p.to_object, world_ray.dir);
   switch (p.kind) {
@@ -196,6 +222,12 @@ glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_poin
   switch (p.kind) {
     case PrimitiveKind::Sphere:
       ++ops.matvec;
+      if (p.round_sphere) {
+        // The same normal as through the matrices, with the same count: the
+        // simulated machine does the general work.
+        ++ops.matvec;
+        return glm::normalize(world_point - p.center);
+      }
       n = transform_point(p.to_object, world_point);
       break;
     case PrimitiveKind::Box: {

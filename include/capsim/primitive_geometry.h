@@ -18,6 +18,12 @@ struct PreparedPrimitive {
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of to_world's linear part
   double cone_r1 = 1, cone_r2 = 1;
   Aabb world_bounds;                // the 8 corners of the object box, transformed
+  // A sphere whose transform is a similarity (rotation, uniform scale, mirror,
+  // translation) is a round sphere in world space too: centre and radius let it
+  // be intersected there, without carrying the ray into object space.
+  bool round_sphere = false;
+  glm::dvec3 center{0};
+  double radius = 1;
 };
 
 PreparedPrimitive prepare_primitive(const Primitive& p);
