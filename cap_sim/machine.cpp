@@ -1,5 +1,8 @@
 #include "machine.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include "cell.h"
 #include "command_bus.h"
 #include "event_kernel.h"
@@ -105,7 +108,8 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
   result.screen = compose_screen(layout, video);
 
   result.pixel_cycles.assign(static_cast<std::size_t>(layout.width()) * layout.height(), 0.0f);
-  for (const auto& cell : cells) {
+  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {  // disjoint pixels
+    const auto& cell = cells[c];
     const CellWindow& w = cell->window();
     const std::vector<std::uint64_t>& cycles = cell->pixel_cycles();
     for (int k = 0; k < w.pixel_count(); ++k) {
@@ -113,7 +117,7 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
       result.pixel_cycles[static_cast<std::size_t>(p.y) * layout.width() + p.x] =
           static_cast<float>(cycles[k]);
     }
-  }
+  });
   return result;
 }
 
@@ -128,7 +132,9 @@ SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& confi
     Progress progress("tracing", static_cast<std::uint64_t>(cam.width) * cam.height, show_progress);
     traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress);
   }
-  return run_frame(tracer.scene(), layout, std::move(traced), config);
+  // The event loop is serial; composing the screen uses the same host threads.
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  return arena.execute([&] { return run_frame(tracer.scene(), layout, std::move(traced), config); });
 }
 
 }  // namespace capsim::sim

@@ -7,8 +7,6 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-#include <array>
-#include <atomic>
 
 namespace capsim::sim {
 
@@ -21,45 +19,45 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
     cells[c].samples = Framebuffer(n, 1);
     cells[c].pixel_cycles.resize(n);
   }
-  // Per-cell sums, added to from several threads: integer sums, so the totals do
-  // not depend on the order of the additions.
+  // Pixels are traced in screen order, row by row as `capsim render` traces
+  // them (neighbouring rays share voxels and primitives in the caches), and each
+  // sample goes to the video-memory slot of the cell whose window shows it.
+  // Per-cell sums are kept per host thread and added at the end: integer sums,
+  // so the totals do not depend on how rows were spread over threads.
   struct Sums {
-    std::array<std::atomic<std::uint64_t>, kCostCategories> work{};
-    std::atomic<std::uint64_t> rays{0};
+    std::vector<CostBreakdown> work;
+    std::vector<std::uint64_t> rays;
   };
-  std::vector<Sums> sums(cell_count);
+  tbb::enumerable_thread_specific<Sums> sums([&] {
+    return Sums{std::vector<CostBreakdown>(cell_count), std::vector<std::uint64_t>(cell_count, 0)};
+  });
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch(
       [&] { return Tracer::Scratch(tracer.scene()); });
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
-    tbb::parallel_for(0, cell_count, [&](CellId c) {
-      const CellWindow& window = layout.window(c);
-      TracedCell& out = cells[c];
-      tbb::parallel_for(tbb::blocked_range<int>(0, window.pixel_count(), 256),
-                        [&](const tbb::blocked_range<int>& ks) {
-                          Tracer::Scratch& s = scratch.local();
-                          CostBreakdown work;
-                          std::uint64_t rays = 0;
-                          for (int k = ks.begin(); k != ks.end(); ++k) {
-                            const ScreenPixel p = window.screen_pixel(k);
-                            const PixelSample px = tracer.trace_pixel(p.x, p.y, s);
-                            out.samples.set(k, 0, px);
-                            const CostBreakdown cost = pixel_cost(px.ops, costs);
-                            out.pixel_cycles[k] = cost.total().count();
-                            work += cost;
-                            rays += px.ops.rays;
-                          }
-                          for (int i = 0; i < kCostCategories; ++i)
-                            sums[c].work[i].fetch_add(work.cycles[i].count(), std::memory_order_relaxed);
-                          sums[c].rays.fetch_add(rays, std::memory_order_relaxed);
-                          if (progress) progress->advance(static_cast<std::uint64_t>(ks.size()));
-                        });
+    tbb::parallel_for(tbb::blocked_range<int>(0, layout.height()), [&](const tbb::blocked_range<int>& rows) {
+      Tracer::Scratch& s = scratch.local();
+      Sums& sum = sums.local();
+      for (int y = rows.begin(); y != rows.end(); ++y) {
+        for (int x = 0; x < layout.width(); ++x) {
+          const PixelOwner owner = layout.owner({x, y});
+          const PixelSample px = tracer.trace_pixel(x, y, s);
+          TracedCell& out = cells[owner.cell];
+          out.samples.set(owner.video_index, 0, px);
+          const CostBreakdown cost = pixel_cost(px.ops, costs);
+          out.pixel_cycles[owner.video_index] = cost.total().count();
+          sum.work[owner.cell] += cost;
+          sum.rays[owner.cell] += px.ops.rays;
+        }
+      }
+      if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
     });
   });
-  for (CellId c = 0; c < cell_count; ++c) {
-    for (int i = 0; i < kCostCategories; ++i) cells[c].work.cycles[i] = Cycles(sums[c].work[i].load());
-    cells[c].rays = sums[c].rays.load();
-  }
+  for (const Sums& sum : sums)
+    for (CellId c = 0; c < cell_count; ++c) {
+      cells[c].work += sum.work[c];
+      cells[c].rays += sum.rays[c];
+    }
   return cells;
 }
 

@@ -2,7 +2,7 @@
 // The tracing the cells will do, computed ahead of the event loop by host threads
 // (tracing is pure, so the result does not depend on the thread count): every
 // pixel's sample and its cost on a cell, grouped by the cell whose window shows
-// it, in that cell's video-memory order. The event loop then decides, in
+// it, in that cell's video-memory order (traced in screen order, as render does). The event loop then decides, in
 // simulated time, when each cell does that work and writes its video memory.
 
 #include "cost_profile.h"

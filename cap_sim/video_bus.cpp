@@ -1,5 +1,9 @@
 #include "video_bus.h"
 
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -12,8 +16,10 @@ Framebuffer compose_screen(const WindowLayout& layout, const std::vector<const F
   if (static_cast<int>(video.size()) != cells)
     throw std::logic_error("one video memory per cell is needed");
   Framebuffer screen(layout.width(), layout.height());
-  std::vector<unsigned char> written(static_cast<std::size_t>(layout.width()) * layout.height(), 0);
-  for (CellId c = 0; c < cells; ++c) {
+  // Cells write disjoint pixels when the windows are right, so they are
+  // composed in parallel; the atomic count still catches a pixel with two owners.
+  std::vector<std::atomic<unsigned char>> owners(static_cast<std::size_t>(layout.width()) * layout.height());
+  tbb::parallel_for(0, cells, [&](CellId c) {
     const CellWindow& window = layout.window(c);
     const Framebuffer& vm = *video[c];
     if (vm.width != window.pixel_count())
@@ -22,16 +28,16 @@ Framebuffer compose_screen(const WindowLayout& layout, const std::vector<const F
     for (int k = 0; k < window.pixel_count(); ++k) {
       const ScreenPixel p = window.screen_pixel(k);
       const std::size_t s = static_cast<std::size_t>(p.y) * screen.width + p.x;
-      if (written[s]++)
+      if (owners[s].fetch_add(1, std::memory_order_relaxed) != 0)
         throw std::logic_error(fmt::format("screen pixel ({}, {}) has two owners", p.x, p.y));
       std::copy_n(vm.rgba.begin() + 4 * k, 4, screen.rgba.begin() + 4 * s);
       screen.depth[s] = vm.depth[k];
       screen.id[s] = vm.id[k];
     }
-  }
-  const auto hole = std::find(written.begin(), written.end(), 0);
-  if (hole != written.end()) {
-    const auto s = static_cast<int>(hole - written.begin());
+  });
+  const auto hole = std::find_if(owners.begin(), owners.end(), [](const auto& o) { return o.load() == 0; });
+  if (hole != owners.end()) {
+    const auto s = static_cast<int>(hole - owners.begin());
     throw std::logic_error(fmt::format("screen pixel ({}, {}) has no owner", s % screen.width,
                                        s / screen.width));
   }
