@@ -18,6 +18,14 @@ struct Plane {
   double d;
 };
 
+// A bounding plane that is not vertical, as a height over the X-Y plane:
+// z(x, y) = z0 + zx x + zy y on the plane (n.z != 0); front = the solid lies
+// below it (n.z > 0), else above.
+struct FacePlane {
+  double z0, zx, zy;
+  bool front;
+};
+
 // The object-space directions whose supporting planes bound a primitive: the box
 // faces always; for the curved primitives also the 45-degree planes, the extra
 // circumscribing planes of the paper's fig. 2-2, which cut the corners of the box
@@ -122,7 +130,9 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
     counts->matvec += 8;
   }
   const std::vector<glm::dvec2> hull = convex_hull(projected);
-  const std::vector<Plane> planes = world_planes(p);
+  std::vector<FacePlane> faces;
+  for (const Plane& f : world_planes(p))
+    if (f.n.z != 0) faces.push_back({f.d / f.n.z, -f.n.x / f.n.z, -f.n.y / f.n.z, f.n.z > 0});
 
   const Aabb& wb = p.world_bounds;
   const int x0 = clamp_index((wb.lo.x - eps - u.lo.x) / vs.x, n);
@@ -138,19 +148,15 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
       // 3. Z bounds in this column, every bounding face an infinite plane:
       //    Zmax = min over front faces of the max over the column's corners,
       //    Zmin = max over back faces of the min over the column's corners.
+      //    z is linear in x and y, so its max (min) over the four corners takes
+      //    each axis's larger (smaller) term on its own.
       double zmin = wb.lo.z, zmax = wb.hi.z;
-      for (const Plane& f : planes) {
-        if (f.n.z == 0) continue;
-        double zlo = kInfinity, zhi = -kInfinity;
-        for (const glm::dvec2 c : {lo, glm::dvec2(hi.x, lo.y), glm::dvec2(lo.x, hi.y), hi}) {
-          const double z = (f.d - f.n.x * c.x - f.n.y * c.y) / f.n.z;
-          zlo = std::min(zlo, z);
-          zhi = std::max(zhi, z);
-        }
-        if (f.n.z > 0) {
-          zmax = std::min(zmax, zhi);
+      for (const FacePlane& f : faces) {
+        const double ax = f.zx * lo.x, bx = f.zx * hi.x, ay = f.zy * lo.y, by = f.zy * hi.y;
+        if (f.front) {
+          zmax = std::min(zmax, f.z0 + std::max(ax, bx) + std::max(ay, by));
         } else {
-          zmin = std::max(zmin, zlo);
+          zmin = std::max(zmin, f.z0 + std::min(ax, bx) + std::min(ay, by));
         }
       }
       zmin -= eps;
