@@ -65,31 +65,4 @@ void Dda3::start_axis(double entry, double origin, double dir, double inv, doubl
   dt = size * std::abs(inv);
 }
 
-double Dda3::t_out() const { return std::min({tx_, ty_, tz_, t_end_}); }
-
-bool Dda3::step() {
-  // argmin(tx, ty, tz); only one index changes per step: two additions and the
-  // comparisons, no division.
-  if (tx_ <= ty_ && tx_ <= tz_) {
-    if (tx_ >= t_end_) return false;
-    vx_ += incre_x_;
-    if (vx_ < 0 || vx_ >= n_) return false;
-    t_in_ = tx_;
-    tx_ += dtx_;
-  } else if (ty_ <= tz_) {
-    if (ty_ >= t_end_) return false;
-    vy_ += incre_y_;
-    if (vy_ < 0 || vy_ >= n_) return false;
-    t_in_ = ty_;
-    ty_ += dty_;
-  } else {
-    if (tz_ >= t_end_) return false;
-    vz_ += incre_z_;
-    if (vz_ < 0 || vz_ >= n_) return false;
-    t_in_ = tz_;
-    tz_ += dtz_;
-  }
-  return true;
-}
-
 }  // namespace capsim

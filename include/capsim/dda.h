@@ -4,6 +4,8 @@
 
 #include "capsim/voxel_grid.h"
 
+#include <algorithm>
+
 namespace capsim {
 
 class Dda3 {
@@ -17,17 +19,32 @@ class Dda3 {
   // The current voxel and the t range [t_in(), t_out()] the ray spends in it.
   int voxel() const { return (vz_ * n_ + vy_) * n_ + vx_; }
   double t_in() const { return t_in_; }
-  double t_out() const;
+  double t_out() const { return std::min(std::min(tx_, ty_), std::min(tz_, t_end_)); }
 
   // Moves to the next voxel along the ray; false when the ray leaves the grid or
-  // passes its tmax.
-  bool step();
+  // passes its tmax. Inline: it is the inner loop of every ray.
+  bool step() {
+    // argmin(tx, ty, tz); only one index changes per step: two additions and the
+    // comparisons, no division.
+    if (tx_ <= ty_ && tx_ <= tz_) return advance(tx_, dtx_, vx_, incre_x_);
+    if (ty_ <= tz_) return advance(ty_, dty_, vy_, incre_y_);
+    return advance(tz_, dtz_, vz_, incre_z_);
+  }
 
   int vx() const { return vx_; }
   int vy() const { return vy_; }
   int vz() const { return vz_; }
 
  private:
+  bool advance(double& t_next, double dt, int& v, int incre) {
+    if (t_next >= t_end_) return false;
+    v += incre;
+    if (v < 0 || v >= n_) return false;
+    t_in_ = t_next;
+    t_next += dt;
+    return true;
+  }
+
   // The first voxel index along one axis, its increment, and the t of the next
   // plane crossing and between crossings.
   void start_axis(double entry, double origin, double dir, double inv, double lo, double size,
