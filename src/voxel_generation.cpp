@@ -30,7 +30,7 @@ struct FacePlane {
 // faces always; for the curved primitives also the 45-degree planes, the extra
 // circumscribing planes of the paper's fig. 2-2, which cut the corners of the box
 // that the sphere and the cone leave empty.
-std::vector<glm::dvec3> bounding_directions(PrimitiveKind kind) {
+std::vector<glm::dvec3> make_bounding_directions(PrimitiveKind kind) {
   std::vector<glm::dvec3> dirs = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0},
                                   {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
   if (kind == PrimitiveKind::Box) return dirs;
@@ -44,6 +44,22 @@ std::vector<glm::dvec3> bounding_directions(PrimitiveKind kind) {
       }
     }
   return dirs;
+}
+
+// The same, built once per kind.
+const std::vector<glm::dvec3>& bounding_directions(PrimitiveKind kind) {
+  static const std::vector<glm::dvec3> sphere = make_bounding_directions(PrimitiveKind::Sphere);
+  static const std::vector<glm::dvec3> box = make_bounding_directions(PrimitiveKind::Box);
+  static const std::vector<glm::dvec3> cone = make_bounding_directions(PrimitiveKind::Cone);
+  switch (kind) {
+    case PrimitiveKind::Sphere:
+      return sphere;
+    case PrimitiveKind::Box:
+      return box;
+    case PrimitiveKind::Cone:
+      return cone;
+  }
+  return box;
 }
 
 // max over the canonical solid of u . p: the supporting plane's offset.
@@ -64,9 +80,11 @@ double support(const PreparedPrimitive& p, const glm::dvec3& u) {
 // The bounding planes carried to world space: u . q <= h in object space with
 // q = A^-1 (p - t) becomes (A^-T u) . p <= h + (A^-T u) . t.
 std::vector<Plane> world_planes(const PreparedPrimitive& p) {
+  const std::vector<glm::dvec3>& dirs = bounding_directions(p.kind);
   std::vector<Plane> planes;
+  planes.reserve(dirs.size());
   const glm::dvec3 t(p.to_world[3]);
-  for (const glm::dvec3& u : bounding_directions(p.kind)) {
+  for (const glm::dvec3& u : dirs) {
     const glm::dvec3 n = p.normal_to_world * u;
     planes.push_back({n, support(p, u) + glm::dot(n, t)});
   }
@@ -118,6 +136,7 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
   //    to place the canonical box, one matrix x vector per corner).
   const Aabb ob = object_bounds(p);
   std::vector<glm::dvec2> projected;
+  projected.reserve(8);
   for (int k = 0; k < 8; ++k) {
     const glm::dvec3 c{(k & 1) ? ob.hi.x : ob.lo.x, (k & 2) ? ob.hi.y : ob.lo.y,
                        (k & 4) ? ob.hi.z : ob.lo.z};
@@ -130,8 +149,10 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
     counts->matvec += 8;
   }
   const std::vector<glm::dvec2> hull = convex_hull(projected);
+  const std::vector<Plane> planes = world_planes(p);
   std::vector<FacePlane> faces;
-  for (const Plane& f : world_planes(p))
+  faces.reserve(planes.size());
+  for (const Plane& f : planes)
     if (f.n.z != 0) faces.push_back({f.d / f.n.z, -f.n.x / f.n.z, -f.n.y / f.n.z, f.n.z > 0});
 
   const Aabb& wb = p.world_bounds;
