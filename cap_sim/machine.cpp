@@ -1,8 +1,5 @@
 #include "machine.h"
 
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
-
 #include "cell.h"
 #include "command_bus.h"
 #include "event_kernel.h"
@@ -11,6 +8,8 @@
 #include "video_bus.h"
 
 #include <fmt/core.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <memory>
 #include <stdexcept>

@@ -7,7 +7,6 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
-
 namespace capsim::sim {
 
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,

@@ -1,12 +1,10 @@
 #include "video_bus.h"
 
+#include <fmt/core.h>
 #include <tbb/parallel_for.h>
 
-#include <atomic>
-
-#include <fmt/core.h>
-
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 
 namespace capsim::sim {

@@ -9,14 +9,14 @@
 
 #include <algorithm>
 #include <array>
-#include <limits>
 #include <cerrno>
 #include <cmath>
 #include <csetjmp>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <stdexcept>
 
@@ -118,10 +118,6 @@ void write_exr_file(const std::string& path, const Framebuffer& fb, const std::v
     throw std::runtime_error(fmt::format("{}: {}", path, e.what()));
   }
 }
-
-}  // namespace
-
-namespace {
 
 // The sRGB encoding of one channel, rounded to 8 bits: the definition that
 // linear_to_srgb8 must reproduce exactly.

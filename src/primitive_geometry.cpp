@@ -40,21 +40,9 @@ bool slab(double o, double d, double a, double b, double& t0, double& t1) {
   return true;
 }
 
-bool intersect_sphere(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {
-  // Solved about the line's closest point to the centre, p = o + tc d: then
-  // |o + t d|^2 = 1 becomes a (t - tc)^2 = 1 - |p|^2, which keeps its digits
-  // when the origin is far away (b^2 - a c would cancel).
-  const double a = glm::dot(d, d);
-  const double tc = -glm::dot(o, d) / a;
-  const glm::dvec3 p = o + tc * d;
-  const double h2 = (1.0 - glm::dot(p, p)) / a;
-  if (!(h2 > 0)) return false;
-  const double h = std::sqrt(h2);
-  s = {tc - h, tc + h, 0, 0};
-  return s.t_enter < s.t_exit;
-}
-
-// The same about a centre at the origin in world units: |o + t d|^2 = r^2.
+// |o + t d|^2 = r2, solved about the line's closest point to the centre,
+// p = o + tc d: it becomes a (t - tc)^2 = r2 - |p|^2, which keeps its digits
+// when the origin is far away (b^2 - a c would cancel).
 bool intersect_round_sphere(const glm::dvec3& o, const glm::dvec3& d, double r2, LineSpan& s) {
   const double a = glm::dot(d, d);
   const double tc = -glm::dot(o, d) / a;
@@ -64,6 +52,11 @@ bool intersect_round_sphere(const glm::dvec3& o, const glm::dvec3& d, double r2,
   const double h = std::sqrt(h2);
   s = {tc - h, tc + h, 0, 0};
   return s.t_enter < s.t_exit;
+}
+
+// The unit sphere in object space.
+bool intersect_sphere(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {
+  return intersect_round_sphere(o, d, 1.0, s);
 }
 
 bool intersect_box(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {
