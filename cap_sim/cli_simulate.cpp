@@ -12,8 +12,6 @@
 
 #include <fmt/core.h>
 
-#include <algorithm>
-#include <cctype>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -30,11 +28,6 @@ struct SimulateOptions {
   std::string trace;    // Chrome trace-event JSON path; empty = none
   std::string heatmap;  // PNG path; empty = none
 };
-
-bool ends_with_png(std::string path) {
-  std::transform(path.begin(), path.end(), path.begin(), [](unsigned char c) { return std::tolower(c); });
-  return path.size() >= 4 && path.compare(path.size() - 4, 4, ".png") == 0;
-}
 
 // Fails before any work if an output's directory does not exist.
 void check_output_directory(const std::string& path) {
@@ -74,7 +67,7 @@ Command add_simulate_command(CLI::App& app) {
     config.cells = sim::parse_cell_grid(sim->cells);
     config.mode = *sim::parse_pixel_mode(sim->mode);
     config.profile = sim::load_cost_profile(sim->profile);
-    if (!sim->heatmap.empty() && !ends_with_png(sim->heatmap))
+    if (!sim->heatmap.empty() && !is_png_path(sim->heatmap))
       throw std::invalid_argument(fmt::format("{}: the heat map is written as .png", sim->heatmap));
     for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap}) check_output_directory(*path);
 
@@ -84,9 +77,7 @@ Command add_simulate_command(CLI::App& app) {
         sim::simulate_frame(tracer, config, opts->threads, Progress::stderr_is_terminal());
 
     std::vector<ExtraChannel> extra;
-    if (std::filesystem::path(opts->output).extension() != ".png" &&
-        std::filesystem::path(opts->output).extension() != ".PNG")
-      extra.push_back({"cycles", result.pixel_cycles});
+    if (!is_png_path(opts->output)) extra.push_back({"cycles", result.pixel_cycles});
     write_image(opts->output, result.screen, extra);
     if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
     if (!sim->trace.empty()) {

@@ -40,13 +40,14 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
       for (int y = rows.begin(); y != rows.end(); ++y) {
         for (int x = 0; x < layout.width(); ++x) {
           const PixelOwner owner = layout.owner({x, y});
-          const PixelSample px = tracer.trace_pixel(x, y, s);
+          OpCounts ops;
+          const PixelSample px = tracer.trace_pixel(x, y, s, ops);
           TracedCell& out = cells[owner.cell];
           out.samples.set(owner.video_index, 0, px);
-          const CostBreakdown cost = pixel_cost(px.ops, costs);
+          const CostBreakdown cost = pixel_cost(ops, costs);
           out.pixel_cycles[owner.video_index] = cost.total().count();
           sum.work[owner.cell] += cost;
-          sum.rays[owner.cell] += px.ops.rays;
+          sum.rays[owner.cell] += ops.rays;
         }
       }
       if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());

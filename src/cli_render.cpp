@@ -6,6 +6,7 @@
 #include "cli_options.h"
 
 #include <memory>
+#include <vector>
 
 namespace capsim::cli {
 
@@ -18,8 +19,20 @@ Command add_render_command(CLI::App& app) {
     const Tracer tracer(scene, trace_options(*opts));
     Progress progress("rendering", static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height,
                       Progress::stderr_is_terminal());
-    const Framebuffer fb = render(tracer, opts->threads, nullptr, &progress);
-    write_image(opts->output, fb);
+    if (is_png_path(opts->output)) {
+      // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
+      const int width = scene.camera.width;
+      std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * scene.camera.height * 3);
+      render_rows(
+          tracer, opts->threads,
+          [&](int j, std::span<const PixelSample> row) {
+            encode_srgb8_row(row, rgb.data() + static_cast<std::size_t>(j) * width * 3);
+          },
+          nullptr, &progress);
+      write_png_rgb8(opts->output, width, scene.camera.height, rgb);
+    } else {
+      write_image(opts->output, render(tracer, opts->threads, nullptr, &progress));
+    }
     return 0;
   };
 }

@@ -47,9 +47,9 @@ bool intersect_round_sphere(const glm::dvec3& o, const glm::dvec3& d, double r2,
   const double a = glm::dot(d, d);
   const double tc = -glm::dot(o, d) / a;
   const glm::dvec3 p = o + tc * d;
-  const double h2 = (r2 - glm::dot(p, p)) / a;
-  if (!(h2 > 0)) return false;
-  const double h = std::sqrt(h2);
+  const double excess = r2 - glm::dot(p, p);
+  if (!(excess > 0)) return false;  // a miss (most tests) costs no second division
+  const double h = std::sqrt(excess / a);
   s = {tc - h, tc + h, 0, 0};
   return s.t_enter < s.t_exit;
 }

@@ -24,24 +24,27 @@ void Framebuffer::set(int i, int j, const PixelSample& s) {
   id[k] = static_cast<float>(s.primitive);
 }
 
-Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progress* progress) {
+void render_rows(const Tracer& tracer, int threads, const RowSink& store, RenderStats* stats,
+                 Progress* progress) {
   const Camera& cam = tracer.scene().camera;
-  Framebuffer fb(cam.width, cam.height);
   // Per-row counts, summed in row order afterwards: the totals never depend on
   // how rows were spread over threads.
   std::vector<OpCounts> row_ops(cam.height);
-  tbb::enumerable_thread_specific<Tracer::Scratch> scratch(
-      [&] { return Tracer::Scratch(tracer.scene()); });
+  struct Worker {
+    Tracer::Scratch scratch;
+    std::vector<PixelSample> row;
+  };
+  tbb::enumerable_thread_specific<Worker> workers(
+      [&] { return Worker{Tracer::Scratch(tracer.scene()), std::vector<PixelSample>(cam.width)}; });
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, cam.height), [&](const tbb::blocked_range<int>& rows) {
-      Tracer::Scratch& s = scratch.local();
-      for (int j = rows.begin(); j != rows.end(); ++j)
-        for (int i = 0; i < cam.width; ++i) {
-          const PixelSample px = tracer.trace_pixel(i, j, s);
-          fb.set(i, j, px);
-          row_ops[j] += px.ops;
-        }
+      Worker& w = workers.local();
+      for (int j = rows.begin(); j != rows.end(); ++j) {
+        OpCounts& ops = row_ops[j];
+        for (int i = 0; i < cam.width; ++i) w.row[i] = tracer.trace_pixel(i, j, w.scratch, ops);
+        store(j, w.row);
+      }
       if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * cam.width);
     });
   });
@@ -49,6 +52,17 @@ Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progre
     stats->ops = {};
     for (const OpCounts& o : row_ops) stats->ops += o;
   }
+}
+
+Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progress* progress) {
+  const Camera& cam = tracer.scene().camera;
+  Framebuffer fb(cam.width, cam.height);
+  render_rows(
+      tracer, threads,
+      [&](int j, std::span<const PixelSample> row) {
+        for (int i = 0; i < cam.width; ++i) fb.set(i, j, row[i]);
+      },
+      stats, progress);
   return fb;
 }
 

@@ -193,12 +193,12 @@ glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& 
   return color;
 }
 
-PixelSample Tracer::trace_pixel(int i, int j, Scratch& scratch) const {
+PixelSample Tracer::trace_pixel(int i, int j, Scratch& scratch, OpCounts& ops) const {
   PixelSample s;
   Hit h;
   h.t = kInfinity;
-  ++s.ops.primary_rays;
-  s.color = shade(primary_ray(i, j), 0, scratch, s.ops, &h);
+  ++ops.primary_rays;
+  s.color = shade(primary_ray(i, j), 0, scratch, ops, &h);
   if (h.t < kInfinity) {
     s.alpha = 1;
     s.depth = h.t;

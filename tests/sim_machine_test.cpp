@@ -51,7 +51,8 @@ TEST(Machine, CellBusyCyclesAreTheSumOfItsPixelsOperationCosts) {
       const CellWindow& w = layout.window(c.id);
       for (int k = 0; k < w.pixel_count(); ++k) {
         const ScreenPixel p = w.screen_pixel(k);
-        const OpCounts ops = tracer.trace_pixel(p.x, p.y, scratch).ops;
+        OpCounts ops;
+        tracer.trace_pixel(p.x, p.y, scratch, ops);
         expected += pixel_cost(ops, config.profile.cell);
         rays += ops.rays;
       }

@@ -2,13 +2,16 @@
 // tree, voxel generation and the operation counts of whole rays.
 
 #include "capsim/dda.h"
+#include "capsim/render.h"
 #include "capsim/status_tree.h"
 #include "capsim/tracer.h"
 #include "scene_builders.h"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <random>
+#include <span>
 
 using namespace capsim;
 using namespace capsim::testing;
@@ -246,7 +249,9 @@ TEST(VoxelGeneration, IsConservativeAndTighterThanBoundingBoxes) {
     const PreparedScene ps = prepare_scene(sc, o);
     const VoxelGrid aabb = generate_voxels_aabb(ps.prims, ps.placed, ps.grid.universe, n);
     EXPECT_LE(ps.grid.entries(), aabb.entries());
-    if (n == 16) EXPECT_LT(ps.grid.entries(), aabb.entries());
+    if (n == 16) {
+      EXPECT_LT(ps.grid.entries(), aabb.entries());
+    }
     // Points on every primitive's surface lie in voxels that list it.
     const Tracer tracer(ps, {});
     for (std::size_t p = 0; p < ps.prims.size(); ++p) {
@@ -288,7 +293,10 @@ TEST(Tracer, GridSizeDoesNotChangeTheImage) {
     Tracer::Scratch s(ps);
     std::vector<PixelSample> img;
     for (int j = 0; j < 32; ++j)
-      for (int i = 0; i < 48; ++i) img.push_back(tracer.trace_pixel(i, j, s));
+      for (int i = 0; i < 48; ++i) {
+        OpCounts ops;
+        img.push_back(tracer.trace_pixel(i, j, s, ops));
+      }
     if (reference.empty()) {
       reference = img;
       continue;
@@ -297,6 +305,42 @@ TEST(Tracer, GridSizeDoesNotChangeTheImage) {
       ASSERT_EQ(img[k].primitive, reference[k].primitive) << "grid " << n << " pixel " << k;
       ASSERT_EQ(img[k].color, reference[k].color) << "grid " << n << " pixel " << k;
       ASSERT_EQ(img[k].depth, reference[k].depth) << "grid " << n << " pixel " << k;
+    }
+  }
+}
+
+TEST(Render, RowsComeOnceEachAndMatchTheFramebuffer) {
+  std::vector<Primitive> prims;
+  for (int x = 0; x < 3; ++x) prims.push_back(sphere({x * 2.0, 0, 0}, 0.9));
+  prims[1].material.reflect = 0.5;
+  PrepareOptions o;
+  o.width = 40;
+  o.height = 30;
+  const PreparedScene ps = prepare_scene(make_scene(prims), o);
+  const Tracer tracer(ps, {});
+  RenderStats fb_stats, row_stats;
+  const Framebuffer fb = render(tracer, 1, &fb_stats);
+  std::vector<std::vector<PixelSample>> rows(o.height);
+  std::vector<std::atomic<int>> calls(o.height);
+  render_rows(
+      tracer, 2,
+      [&](int j, std::span<const PixelSample> row) {
+        ++calls[j];
+        rows[j].assign(row.begin(), row.end());
+      },
+      &row_stats);
+  EXPECT_EQ(row_stats.ops, fb_stats.ops);
+  EXPECT_GT(row_stats.ops.secondary_rays, 0u);
+  for (int j = 0; j < o.height; ++j) {
+    ASSERT_EQ(calls[j], 1) << "row " << j;
+    ASSERT_EQ(rows[j].size(), static_cast<std::size_t>(o.width));
+    for (int i = 0; i < o.width; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * o.width + i;
+      EXPECT_EQ(static_cast<float>(rows[j][i].color.x), fb.rgba[4 * k]);
+      EXPECT_EQ(static_cast<float>(rows[j][i].color.z), fb.rgba[4 * k + 2]);
+      EXPECT_EQ(rows[j][i].alpha, fb.rgba[4 * k + 3]);
+      EXPECT_EQ(static_cast<float>(rows[j][i].depth), fb.depth[k]);
+      EXPECT_EQ(static_cast<float>(rows[j][i].primitive), fb.id[k]);
     }
   }
 }

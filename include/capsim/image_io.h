@@ -1,15 +1,17 @@
 #pragma once
-// Image output, chosen by the file extension: .png is 8-bit sRGB RGB (libpng);
+// Image output, chosen by the file extension: .png is 8-bit sRGB RGB (libpng for
+// the file, libdeflate for the image data);
 // .exr is linear float R, G, B, A, Z (distance from the eye, +inf on a miss) and
 // id (float primitive index, -1 on a miss), plus any extra channels (OpenEXR).
 // The file is written under a temporary name and renamed only on success.
 //
-// These two libraries rather than OpenImageIO: linking OpenImageIO loads some
+// These libraries rather than OpenImageIO: linking OpenImageIO loads some
 // 250 shared libraries at every start of the program (about half a second),
 // which would cost more than tracing a megapixel.
 
 #include "capsim/render.h"
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,8 +30,15 @@ void write_image(const std::string& path, const Framebuffer& fb,
 // True for the extensions write_image accepts (.png, .exr; any case).
 bool is_supported_image_path(const std::string& path);
 
+// True for a .png path (any case): an 8-bit image, which needs only colour.
+bool is_png_path(const std::string& path);
+
 // Linear [0,1] -> 8-bit sRGB, the encoding PNG output uses.
 unsigned char linear_to_srgb8(float v);
+
+// One row of samples' colours as 8-bit sRGB, 3 bytes per sample, as the PNG
+// output encodes them; rgb holds 3 * row.size() bytes.
+void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb);
 
 // An 8-bit sRGB RGB image (3 bytes per pixel, row 0 at the top) as PNG, written
 // under a temporary name and renamed on success; throws std::runtime_error.

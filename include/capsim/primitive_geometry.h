@@ -10,20 +10,21 @@
 namespace capsim {
 
 // A primitive ready for tracing: the inverse transform and the normal matrix are
-// computed once.
-struct PreparedPrimitive {
+// computed once. What a test of a round sphere reads comes first, in the first
+// cache line of the record.
+struct alignas(64) PreparedPrimitive {
   PrimitiveKind kind = PrimitiveKind::Sphere;
-  glm::dmat4 to_world{1.0};
-  glm::dmat4 to_object{1.0};
-  glm::dmat3 normal_to_world{1.0};  // inverse transpose of to_world's linear part
-  double cone_r1 = 1, cone_r2 = 1;
-  Aabb world_bounds;                // the 8 corners of the object box, transformed
   // A sphere whose transform is a similarity (rotation, uniform scale, mirror,
   // translation) is a round sphere in world space too: centre and radius let it
   // be intersected there, without carrying the ray into object space.
   bool round_sphere = false;
   glm::dvec3 center{0};
   double radius = 1;
+  glm::dmat4 to_world{1.0};
+  glm::dmat4 to_object{1.0};
+  glm::dmat3 normal_to_world{1.0};  // inverse transpose of to_world's linear part
+  double cone_r1 = 1, cone_r2 = 1;
+  Aabb world_bounds;                // the 8 corners of the object box, transformed
 };
 
 PreparedPrimitive prepare_primitive(const Primitive& p);

@@ -5,6 +5,8 @@
 #include "capsim/progress.h"
 #include "capsim/tracer.h"
 
+#include <functional>
+#include <span>
 #include <vector>
 
 namespace capsim {
@@ -24,8 +26,19 @@ struct RenderStats {
   OpCounts ops;  // summed over every pixel
 };
 
-// threads: 0 = all hardware threads. progress, if given, advances by each
-// finished row's pixels.
+// Receives each finished row j of the image, its samples in column order. Called
+// from several host threads at once, for different rows, in no set order.
+using RowSink = std::function<void(int j, std::span<const PixelSample> row)>;
+
+// Traces every pixel of the camera's image and hands the rows to store. Callers
+// that need only part of a sample (an 8-bit image, say) keep only that part,
+// rather than a whole Framebuffer. threads: 0 = all hardware threads. stats, if
+// given, receives the summed counts (equal for any thread count); progress, if
+// given, advances by each finished row's pixels.
+void render_rows(const Tracer& tracer, int threads, const RowSink& store,
+                 RenderStats* stats = nullptr, Progress* progress = nullptr);
+
+// render_rows into a Framebuffer.
 Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats = nullptr,
                    Progress* progress = nullptr);
 

@@ -27,15 +27,13 @@ struct Hit {
   bool entering = true;  // the ray goes from outside the solid to inside here
 };
 
-// What one pixel returns: linear colour, coverage, the primary ray's visible
-// distance from the eye (+inf on a miss) and primitive (-1 on a miss), and the
-// operations spent on it.
+// What one pixel returns: linear colour, coverage, and the primary ray's visible
+// distance from the eye (+inf on a miss) and primitive (-1 on a miss).
 struct PixelSample {
   glm::dvec3 color{0};
   float alpha = 0;
   double depth = kInfinity;
   int primitive = -1;
-  OpCounts ops;
 };
 
 class Tracer {
@@ -62,8 +60,10 @@ class Tracer {
   // Partial evaluation: the first root transition in (ray.tmin, ray.tmax), if any.
   bool first_hit(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
 
-  // The primary ray through the centre of pixel (i, j), shaded.
-  PixelSample trace_pixel(int i, int j, Scratch& scratch) const;
+  // The primary ray through the centre of pixel (i, j), shaded; adds the
+  // operations spent on it to ops (the caller sums them per row or per pixel, as
+  // it needs, without a fresh set of counts per call).
+  PixelSample trace_pixel(int i, int j, Scratch& scratch, OpCounts& ops) const;
 
   Ray primary_ray(int i, int j) const;
   const PreparedScene& scene() const { return scene_; }
