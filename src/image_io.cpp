@@ -169,7 +169,7 @@ std::array<float, 256> srgb8_thresholds() {
   return t;
 }
 
-// The encoding by table: floats in [0, 1) fall into 16256 buckets by their top
+// The encoding by table: floats in [0, 1] fall into 16257 buckets by their top
 // 16 bits (sign, exponent and 7 mantissa bits). No bucket spans more than one
 // step of the encoding, so a bucket's first code and the threshold of the next
 // code give the exact result with one comparison. The encoding is monotonic,
@@ -189,8 +189,9 @@ class Srgb8Table {
     }
   }
   unsigned char operator()(float v) const {
-    if (!(v > 0)) return 0;  // also NaN
-    if (v >= 1) return 255;
+    // Into [0, 1] without branches; NaN becomes 0 (std::max returns its first
+    // argument when the comparison fails).
+    v = std::min(std::max(0.0f, v), 1.0f);
     std::uint32_t bits;
     std::memcpy(&bits, &v, sizeof bits);
     const std::uint32_t b = bits >> 16;
@@ -198,7 +199,7 @@ class Srgb8Table {
   }
 
  private:
-  static constexpr std::uint32_t kBuckets = 0x3f80;  // the top 16 bits of 1.0f
+  static constexpr std::uint32_t kBuckets = 0x3f81;  // up to the top 16 bits of 1.0f
   static float float_of(std::uint32_t bits) {
     float f;
     std::memcpy(&f, &bits, sizeof f);

@@ -13,13 +13,11 @@ namespace {
 // Each operator's truth table, bit (2 * left + right): union 1110, intersection
 // 1000, difference (left and not right) 0100. A table lookup keeps the climb of
 // Algorithm-4 free of unpredictable branches.
-constexpr unsigned kTruth[3] = {0b1110u, 0b1000u, 0b0100u};
+constexpr std::uint8_t kTruth[3] = {0b1110u, 0b1000u, 0b0100u};
+// StatusSelf sits just above the two operand bits that index the table.
+static_assert(StatusNode::kSelf == 4 && (StatusNode::kLeft | StatusNode::kRight) == 3);
 static_assert(static_cast<int>(CsgOp::Union) == 0 && static_cast<int>(CsgOp::Intersection) == 1 &&
               static_cast<int>(CsgOp::Difference) == 2);
-
-bool combine(CsgOp op, bool left, bool right) {
-  return (kTruth[static_cast<int>(op)] >> (2u * left + right)) & 1u;
-}
 
 // The CSG tree after simplification: binary operators over primitives, with no
 // empty set left anywhere (an empty result is a null pointer).
@@ -95,20 +93,20 @@ StatusTree::StatusTree(const CsgNode& root, std::size_t primitive_count)
   struct Item {
     const Binary* node;
     std::int32_t parent;
-    bool left;
+    std::uint8_t side;  // the parent's status this node sets
   };
-  std::vector<Item> stack = {{tree.get(), -1, true}};
+  std::vector<Item> stack = {{tree.get(), -1, StatusNode::kLeft}};
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
     if (it.node->is_leaf) {
-      leaves_[it.node->primitive] = {it.parent, it.left, true};
+      leaves_[it.node->primitive] = {it.parent, it.side, true};
       continue;
     }
     const auto index = static_cast<std::int32_t>(nodes_.size());
-    nodes_.push_back({it.node->op, it.parent, it.left, false, false, false, 0});
-    stack.push_back({it.node->right.get(), index, false});
-    stack.push_back({it.node->left.get(), index, true});
+    nodes_.push_back({it.node->op, it.parent, it.side, kTruth[static_cast<int>(it.node->op)], 0, 0});
+    stack.push_back({it.node->right.get(), index, StatusNode::kRight});
+    stack.push_back({it.node->left.get(), index, StatusNode::kLeft});
   }
 }
 
@@ -118,29 +116,28 @@ bool StatusTree::toggle(std::uint32_t p, OpCounts& ops) {
     leaf_epoch_[p] = epoch_;
     leaf_inside_[p] = 0;
   }
-  bool value = (leaf_inside_[p] ^= 1);
+  unsigned value = (leaf_inside_[p] ^= 1);
   std::int32_t at = leaves_[p].parent;
-  bool from_left = leaves_[p].parent_left;
+  unsigned side = leaves_[p].parent_side;
   while (at >= 0) {
     ++visits;
     StatusNode& node = nodes_[at];
-    if (node.epoch != epoch_) {
-      node.epoch = epoch_;
-      node.status_self = node.status_left = node.status_right = false;
-    }
-    (from_left ? node.status_left : node.status_right) = value;
-    const bool self = combine(node.op, node.status_left, node.status_right);
-    if (self == node.status_self) {  // the early stop of Algorithm-4
+    // A node this ray has not reached yet has every status false.
+    const unsigned status = node.epoch == epoch_ ? node.status : 0u;
+    node.epoch = epoch_;
+    const unsigned operands = (status & ~side & 3u) | (value ? side : 0u);
+    const unsigned self = (node.truth >> operands) & 1u;
+    node.status = static_cast<std::uint8_t>(operands | self << 2);
+    if (self == status >> 2) {  // the early stop of Algorithm-4
       ops.tree_visits += visits;
       return false;
     }
-    node.status_self = self;
     value = self;
-    from_left = node.parent_left;
+    side = node.parent_side;
     at = node.parent;
   }
   ops.tree_visits += visits;
-  root_inside_ = value;
+  root_inside_ = value != 0;
   return true;
 }
 

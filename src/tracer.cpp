@@ -23,9 +23,13 @@ bool later(const Crossing& a, const Crossing& b) {
 
 // Pending crossings are few (those of the primitives met so far that lie
 // beyond the current voxel), so a vector kept sorted latest-first, with the
-// nearest at the back, beats a heap.
+// nearest at the back, beats a heap; a new crossing enters by insertion from
+// the back, after any equal ones.
 void insert_sorted(std::vector<Crossing>& pending, const Crossing& c) {
-  pending.insert(std::upper_bound(pending.begin(), pending.end(), c, later), c);
+  pending.push_back(c);
+  std::size_t k = pending.size() - 1;
+  for (; k > 0 && later(c, pending[k - 1]); --k) pending[k] = pending[k - 1];
+  pending[k] = c;
 }
 
 // x^e for the Phong highlight. Whole exponents (as materials usually give) go by

@@ -14,13 +14,20 @@
 namespace capsim {
 
 struct StatusNode {
+  // StatusSelf, StatusLeft and StatusRight are bits of `status`; left and right
+  // together, (status & 3), index the operator's truth table.
+  static constexpr std::uint8_t kRight = 1, kLeft = 2, kSelf = 4;
+
   CsgOp op = CsgOp::Union;
-  std::int32_t parent = -1;  // -1 at the root
-  bool parent_left = true;   // this node is its parent's left child
-  bool status_self = false;
-  bool status_left = false;
-  bool status_right = false;
-  std::uint32_t epoch = 0;  // statuses are valid only when equal to the tree's epoch
+  std::int32_t parent = -1;           // -1 at the root
+  std::uint8_t parent_side = kLeft;  // the parent's status it sets: kLeft or kRight
+  std::uint8_t truth = 0;             // op as a truth table: bit (2 * left + right) is self
+  std::uint8_t status = 0;
+  std::uint32_t epoch = 0;  // status is valid only when equal to the tree's epoch
+
+  bool status_self() const { return status & kSelf; }
+  bool status_left() const { return status & kLeft; }
+  bool status_right() const { return status & kRight; }
 };
 
 // Where a primitive's leaf hangs: its parent operator node and side. A primitive
@@ -28,7 +35,7 @@ struct StatusNode {
 // empty-set branch that the build removed) is absent.
 struct StatusLeaf {
   std::int32_t parent = -1;
-  bool parent_left = true;
+  std::uint8_t parent_side = StatusNode::kLeft;
   bool present = false;
 };
 
