@@ -41,15 +41,18 @@ bool slab(double o, double d, double a, double b, double& t0, double& t1) {
 }
 
 // |o + t d|^2 = r2, solved about the line's closest point to the centre,
-// p = o + tc d: it becomes a (t - tc)^2 = r2 - |p|^2, which keeps its digits
-// when the origin is far away (b^2 - a c would cancel).
+// p = o + tc d with tc = -(o . d) / a: it becomes a (t - tc)^2 = r2 - |p|^2,
+// which keeps its digits when the origin is far away (b^2 - a c would cancel).
+// Most tests miss, and the miss test needs no division: with q = a p =
+// a o - (o . d) d, the line meets the sphere where a^2 r2 > |q|^2.
 bool intersect_round_sphere(const glm::dvec3& o, const glm::dvec3& d, double r2, LineSpan& s) {
   const double a = glm::dot(d, d);
-  const double tc = -glm::dot(o, d) / a;
-  const glm::dvec3 p = o + tc * d;
-  const double excess = r2 - glm::dot(p, p);
-  if (!(excess > 0)) return false;  // a miss (most tests) costs no second division
-  const double h = std::sqrt(excess / a);
+  const double b = glm::dot(o, d);
+  const glm::dvec3 q = a * o - b * d;
+  const double excess = a * a * r2 - glm::dot(q, q);  // a^2 (r2 - |p|^2)
+  if (!(excess > 0)) return false;
+  const double tc = -b / a;
+  const double h = std::sqrt(excess / a) / a;  // sqrt((r2 - |p|^2) / a)
   s = {tc - h, tc + h, 0, 0};
   return s.t_enter < s.t_exit;
 }
