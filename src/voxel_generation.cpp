@@ -12,12 +12,6 @@ namespace capsim {
 
 namespace {
 
-// A half-space n . p <= d in world space.
-struct Plane {
-  glm::dvec3 n;
-  double d;
-};
-
 // A bounding plane that is not vertical, as a height over the X-Y plane:
 // z(x, y) = z0 + zx x + zy y on the plane (n.z != 0); front = the solid lies
 // below it (n.z > 0), else above.
@@ -78,21 +72,23 @@ double support(const PreparedPrimitive& p, const glm::dvec3& u) {
 }
 
 // The bounding planes carried to world space: u . q <= h in object space with
-// q = A^-1 (p - t) becomes (A^-T u) . p <= h + (A^-T u) . t.
-std::vector<Plane> world_planes(const PreparedPrimitive& p) {
+// q = A^-1 (p - t) becomes (A^-T u) . p <= h + (A^-T u) . t. Only the planes that
+// are not vertical bound Z; each is kept as its height over the X-Y plane.
+std::vector<FacePlane> world_face_planes(const PreparedPrimitive& p) {
   const std::vector<glm::dvec3>& dirs = bounding_directions(p.kind);
-  std::vector<Plane> planes;
-  planes.reserve(dirs.size());
+  std::vector<FacePlane> faces;
+  faces.reserve(dirs.size());
   const glm::dvec3 t(p.to_world[3]);
   for (const glm::dvec3& u : dirs) {
     const glm::dvec3 n = p.normal_to_world * u;
-    planes.push_back({n, support(p, u) + glm::dot(n, t)});
+    const double d = support(p, u) + glm::dot(n, t);
+    if (n.z != 0) faces.push_back({d / n.z, -n.x / n.z, -n.y / n.z, n.z > 0});
   }
-  return planes;
+  return faces;
 }
 
 // The convex hull (counter-clockwise) of the projected box corners.
-std::vector<glm::dvec2> convex_hull(std::vector<glm::dvec2> pts) {
+std::vector<glm::dvec2> convex_hull(std::array<glm::dvec2, 8> pts) {
   std::sort(pts.begin(), pts.end(),
             [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   std::vector<glm::dvec2> hull(2 * pts.size());
@@ -135,13 +131,12 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
   // 1. the bounding box in world coordinates: eight corners (one matrix x matrix
   //    to place the canonical box, one matrix x vector per corner).
   const Aabb ob = object_bounds(p);
-  std::vector<glm::dvec2> projected;
-  projected.reserve(8);
+  std::array<glm::dvec2, 8> projected;
   for (int k = 0; k < 8; ++k) {
     const glm::dvec3 c{(k & 1) ? ob.hi.x : ob.lo.x, (k & 2) ? ob.hi.y : ob.lo.y,
                        (k & 4) ? ob.hi.z : ob.lo.z};
     const glm::dvec3 w(p.to_world * glm::dvec4(c, 1.0));
-    projected.push_back({w.x, w.y});  // 2. parallel projection onto X-Y
+    projected[k] = {w.x, w.y};  // 2. parallel projection onto X-Y
   }
   if (counts) {
     ++counts->primitives;
@@ -149,11 +144,7 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
     counts->matvec += 8;
   }
   const std::vector<glm::dvec2> hull = convex_hull(projected);
-  const std::vector<Plane> planes = world_planes(p);
-  std::vector<FacePlane> faces;
-  faces.reserve(planes.size());
-  for (const Plane& f : planes)
-    if (f.n.z != 0) faces.push_back({f.d / f.n.z, -f.n.x / f.n.z, -f.n.y / f.n.z, f.n.z > 0});
+  const std::vector<FacePlane> faces = world_face_planes(p);
 
   const Aabb& wb = p.world_bounds;
   const int x0 = clamp_index((wb.lo.x - eps - u.lo.x) / vs.x, n);
@@ -190,9 +181,16 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
   }
 }
 
-// Compressed rows from per-primitive voxel lists, primitives ascending in each voxel.
-VoxelGrid build_grid(const Aabb& universe, int n,
-                     const std::vector<std::vector<std::uint32_t>>& voxels_of) {
+// Every primitive's voxels, primitives in file order, in one array: primitive
+// p's are voxels[start[p]] up to voxels[start[p + 1]].
+struct Placements {
+  std::vector<std::uint32_t> voxels;
+  std::vector<std::size_t> start{0};
+  void end_primitive() { start.push_back(voxels.size()); }
+};
+
+// Compressed rows from the placements, primitives ascending in each voxel.
+VoxelGrid build_grid(const Aabb& universe, int n, const Placements& placed) {
   VoxelGrid g;
   g.universe = universe;
   g.n = n;
@@ -200,13 +198,13 @@ VoxelGrid build_grid(const Aabb& universe, int n,
   g.inv_voxel_size = static_cast<double>(n) / universe.extent();
   const std::size_t cells = static_cast<std::size_t>(n) * n * n;
   g.offsets.assign(cells + 1, 0);
-  for (const auto& vs : voxels_of)
-    for (std::uint32_t v : vs) ++g.offsets[v + 1];
+  for (std::uint32_t v : placed.voxels) ++g.offsets[v + 1];
   for (std::size_t v = 0; v < cells; ++v) g.offsets[v + 1] += g.offsets[v];
   g.items.resize(g.offsets[cells]);
   std::vector<std::uint32_t> fill(g.offsets.begin(), g.offsets.end() - 1);
-  for (std::size_t p = 0; p < voxels_of.size(); ++p)
-    for (std::uint32_t v : voxels_of[p]) g.items[fill[v]++] = static_cast<std::uint32_t>(p);
+  for (std::size_t p = 0; p + 1 < placed.start.size(); ++p)
+    for (std::size_t k = placed.start[p]; k < placed.start[p + 1]; ++k)
+      g.items[fill[placed.voxels[k]]++] = static_cast<std::uint32_t>(p);
   return g;
 }
 
@@ -234,10 +232,13 @@ VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
                           VoxelGenCounts* counts) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
   const double eps = grid_epsilon(universe);
-  std::vector<std::vector<std::uint32_t>> voxels_of(prims.size());
-  for (std::size_t i = 0; i < prims.size(); ++i)
-    if (placed[i]) place_primitive(prims[i], universe, n, vs, eps, voxels_of[i], counts);
-  VoxelGrid g = build_grid(universe, n, voxels_of);
+  Placements placements;
+  placements.start.reserve(prims.size() + 1);
+  for (std::size_t i = 0; i < prims.size(); ++i) {
+    if (placed[i]) place_primitive(prims[i], universe, n, vs, eps, placements.voxels, counts);
+    placements.end_primitive();
+  }
+  VoxelGrid g = build_grid(universe, n, placements);
   if (counts) counts->voxel_entries += g.entries();
   return g;
 }
@@ -246,9 +247,13 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
                                const std::vector<bool>& placed, const Aabb& universe, int n) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
   const double eps = grid_epsilon(universe);
-  std::vector<std::vector<std::uint32_t>> voxels_of(prims.size());
+  Placements placements;
+  placements.start.reserve(prims.size() + 1);
   for (std::size_t i = 0; i < prims.size(); ++i) {
-    if (!placed[i]) continue;
+    if (!placed[i]) {
+      placements.end_primitive();
+      continue;
+    }
     const Aabb& b = prims[i].world_bounds;
     const glm::ivec3 lo{clamp_index((b.lo.x - eps - universe.lo.x) / vs.x, n),
                         clamp_index((b.lo.y - eps - universe.lo.y) / vs.y, n),
@@ -259,9 +264,10 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
     for (int z = lo.z; z <= hi.z; ++z)
       for (int y = lo.y; y <= hi.y; ++y)
         for (int x = lo.x; x <= hi.x; ++x)
-          voxels_of[i].push_back(static_cast<std::uint32_t>((z * n + y) * n + x));
+          placements.voxels.push_back(static_cast<std::uint32_t>((z * n + y) * n + x));
+    placements.end_primitive();
   }
-  return build_grid(universe, n, voxels_of);
+  return build_grid(universe, n, placements);
 }
 
 int auto_grid_divisions(std::size_t placed_primitives) {
