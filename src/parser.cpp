@@ -12,7 +12,9 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <memory_resource>
 #include <optional>
+#include <span>
 
 #include "scene_args.h"
 #include "scene_lexer.h"
@@ -23,6 +25,7 @@ namespace capsim {
 namespace {
 
 using scene_file::Call;
+using scene_file::Loc;
 
 constexpr std::string_view kSupported =
     "sphere, cube, cylinder, multmatrix, translate, rotate, scale, mirror, union, difference, "
@@ -80,18 +83,19 @@ struct Context {
   glm::dvec3 color = Primitive{}.color;
   double alpha = 1;
   Material material;
-  bool dropped = false;  // inside a '%' or '*' subtree: parsed and checked, then discarded
-  std::string parent;    // enclosing call, "" at the top level
+  bool dropped = false;     // inside a '%' or '*' subtree: parsed and checked, then discarded
+  std::string_view parent;  // enclosing call, "" at the top level
 };
 
 class Interpreter {
  public:
   explicit Interpreter(std::shared_ptr<const std::string> file) : file_(std::move(file)) {}
 
-  Scene run(const std::vector<Call>& calls, bool file_has_tokens, const SourceLoc& end) {
+  Scene run(std::span<const Call> calls, bool file_has_tokens, const Loc& end) {
     CsgNode root;
     root.op = CsgOp::Union;
     root.loc = SourceLoc{file_, 1, 1};
+    root.children.reserve(calls.size());
     int objects = 0;
     Context top;
     for (const Call& call : calls) {
@@ -111,6 +115,7 @@ class Interpreter {
     }
     if (root_) root.children = {std::move(*root_)};
     // Keep only the primitives the final tree uses, numbered in file order.
+    scene_.primitives.reserve(all_primitives_.size());
     compact(root);
     scene_.root = std::move(root);
     return std::move(scene_);
@@ -194,7 +199,7 @@ class Interpreter {
   }
 
   std::optional<CsgNode> build(const Call& call, const Context& ctx) {
-    const std::string& name = call.name;
+    std::string_view name = call.name;
     if (is_primitive(name)) {
       no_children(call);
       return primitive(call, ctx);
@@ -204,20 +209,20 @@ class Interpreter {
     inner.parent = name;
     if (is_transform(name)) {
       inner.transform = ctx.transform * scene_file::read_transform(call);
-      return pass_through(call, children(call, inner));
+      return pass_through_children(call, inner);
     }
     if (name == "color") {
       scene_file::ColorSetting c = scene_file::read_color(call);
       if (c.linear_rgb) inner.color = *c.linear_rgb;
       inner.alpha = c.alpha;
-      return pass_through(call, children(call, inner));
+      return pass_through_children(call, inner);
     }
     if (name == "material") {
       inner.material = scene_file::read_material(call, ctx.material);
-      return pass_through(call, children(call, inner));
+      return pass_through_children(call, inner);
     }
     scene_file::read_pass_through(call);
-    if (name == "render") return pass_through(call, children(call, inner));
+    if (name == "render") return pass_through_children(call, inner);
     CsgNode node;
     node.op = name == "difference"     ? CsgOp::Difference
               : name == "intersection" ? CsgOp::Intersection
@@ -229,6 +234,7 @@ class Interpreter {
 
   std::vector<CsgNode> children(const Call& call, const Context& ctx) {
     std::vector<CsgNode> out;
+    out.reserve(call.children.size());
     for (const Call& child : call.children) {
       if (auto node = object(child, ctx)) out.push_back(std::move(*node));
     }
@@ -237,6 +243,15 @@ class Interpreter {
 
   // Transforms, colours, materials and render() are not CSG operators: one child
   // passes through, several form their union (as in OpenSCAD).
+  CsgNode pass_through_children(const Call& call, const Context& ctx) {
+    // A single child, by far the most common case, needs no list of nodes.
+    if (call.children.size() == 1) {
+      std::optional<CsgNode> node = object(call.children.front(), ctx);
+      return node ? std::move(*node) : empty_union(call.loc);
+    }
+    return pass_through(call, children(call, ctx));
+  }
+
   CsgNode pass_through(const Call& call, std::vector<CsgNode> nodes) {
     if (nodes.size() == 1) return std::move(nodes.front());
     CsgNode node = empty_union(call.loc);
@@ -244,7 +259,7 @@ class Interpreter {
     return node;
   }
 
-  CsgNode empty_union(const SourceLoc& loc) {
+  CsgNode empty_union(const Loc& loc) {
     CsgNode node;
     node.op = CsgOp::Union;
     node.loc = loc;
@@ -288,9 +303,9 @@ class Interpreter {
   Scene scene_;
   std::vector<Primitive> all_primitives_;  // including those of dropped subtrees
   std::optional<CsgNode> root_;            // the '!' subtree, if any
-  SourceLoc root_loc_;
-  std::optional<SourceLoc> camera_loc_;
-  std::optional<SourceLoc> background_loc_;
+  Loc root_loc_;
+  std::optional<Loc> camera_loc_;
+  std::optional<Loc> background_loc_;
 };
 
 }  // namespace
@@ -298,8 +313,11 @@ class Interpreter {
 Scene parse_scene(std::string_view text, const std::string& file_name) {
   auto file = std::make_shared<const std::string>(file_name);
   std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
-  SourceLoc end;
-  std::vector<Call> calls = scene_file::read_calls(tokens, &end);
+  Loc end;
+  // Holds the lists of the calls (see scene_syntax.h); declared first, so it
+  // outlives them.
+  std::pmr::monotonic_buffer_resource memory;
+  std::pmr::vector<Call> calls = scene_file::read_calls(tokens, &memory, &end);
   return Interpreter(file).run(calls, tokens.size() > 1, end);
 }
 

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <iterator>
+#include <stdexcept>
 
 namespace capsim::scene_file {
 namespace {
@@ -26,6 +28,9 @@ size_t edit_distance(std::string_view a, std::string_view b) {
   }
   return row[b.size()];
 }
+
+// Where an argument is written: its name, or its value if it is positional.
+Loc written_at(const Argument& arg) { return arg.name.empty() ? arg.value.loc : arg.name_loc; }
 
 }  // namespace
 
@@ -66,66 +71,88 @@ std::string describe(const Value& value) {
 Args::Args(const Call& call, std::initializer_list<std::string_view> positional,
            std::initializer_list<std::string_view> named_only)
     : call_(call) {
-  for (std::string_view n : positional) names_.emplace_back(n);
-  for (std::string_view n : named_only) names_.emplace_back(n);
-  for (std::string_view n : kIgnoredSpecials) names_.emplace_back(n);
-  bound_.assign(names_.size(), nullptr);
+  for (std::string_view n : positional) add_param(n);
+  for (std::string_view n : named_only) add_param(n);
+  for (std::string_view n : kIgnoredSpecials) add_param(n);
 
   size_t next_positional = 0;
   for (const Argument& arg : call.args) {
-    size_t index = names_.size();
-    SourceLoc where = arg.name.empty() ? arg.value.loc : arg.name_loc;
+    size_t index = param_count_;
     if (arg.name.empty()) {
-      if (next_positional >= positional.size()) {
-        std::string list;
-        for (std::string_view n : positional) list += (list.empty() ? "" : ", ") + std::string(n);
-        throw SceneError(
-            where, positional.size() == 0
-                       ? fmt::format("{} takes no positional arguments", call.name)
-                       : fmt::format("{} takes at most {} positional argument{} ({})", call.name,
-                                     positional.size(), positional.size() == 1 ? "" : "s", list));
-      }
+      if (next_positional >= positional.size()) fail_positional(arg, positional);
       index = next_positional++;
     } else {
-      index = std::find(names_.begin(), names_.end(), arg.name) - names_.begin();
-      if (index == names_.size()) {
-        std::string list;
-        for (const std::string& n : names_) list += (list.empty() ? "" : ", ") + n;
-        std::string guess = closest_name(arg.name, names_);
-        throw SceneError(
-            where,
-            fmt::format("unknown argument '{}' for {}{}; accepted: {}", arg.name, call.name,
-                        guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess), list));
-      }
+      index = index_of(arg.name);
+      if (index == param_count_) fail_unknown(arg);
     }
-    if (const Argument* first = bound_[index]) {
-      SourceLoc first_loc = first->name.empty() ? first->value.loc : first->name_loc;
-      throw SceneError(where, fmt::format("duplicate argument '{}' for {} (first given at {}:{})",
-                                          names_[index], call.name, first_loc.line, first_loc.col));
+    if (const Argument* first = params_[index].bound) {
+      Loc first_loc = written_at(*first);
+      throw SceneError(written_at(arg),
+                       fmt::format("duplicate argument '{}' for {} (first given at {}:{})",
+                                   params_[index].name, call.name, first_loc.line, first_loc.col));
     }
-    bound_[index] = &arg;
+    params_[index].bound = &arg;
   }
-  for (std::string_view special : kIgnoredSpecials) {
-    if (has(special) && value(special).kind != Value::Kind::Number) fail_type(special, "a number");
+  // The specials are the last parameters (added above), so no lookup by name.
+  for (size_t i = param_count_ - std::size(kIgnoredSpecials); i < param_count_; ++i) {
+    const Argument* special = params_[i].bound;
+    if (special && special->value.kind != Value::Kind::Undef &&
+        special->value.kind != Value::Kind::Number) {
+      fail_type(params_[i].name, "a number");
+    }
   }
 }
 
-const Argument* Args::find(std::string_view name) const {
-  for (size_t i = 0; i < names_.size(); ++i) {
-    if (names_[i] == name) {
-      const Argument* arg = bound_[i];
-      return arg && arg->value.kind != Value::Kind::Undef ? arg : nullptr;
-    }
+void Args::add_param(std::string_view name) {
+  if (param_count_ == kMaxParams) throw std::logic_error("Args: too many parameters");
+  params_[param_count_++] = Param{name, nullptr};
+}
+
+size_t Args::index_of(std::string_view name) const {
+  for (size_t i = 0; i < param_count_; ++i) {
+    if (params_[i].name == name) return i;
   }
-  return nullptr;
+  return param_count_;
+}
+
+void Args::fail_positional(const Argument& arg,
+                           std::initializer_list<std::string_view> positional) const {
+  std::string list;
+  for (std::string_view n : positional) list += (list.empty() ? "" : ", ") + std::string(n);
+  throw SceneError(written_at(arg),
+                   positional.size() == 0
+                       ? fmt::format("{} takes no positional arguments", call_.name)
+                       : fmt::format("{} takes at most {} positional argument{} ({})", call_.name,
+                                     positional.size(), positional.size() == 1 ? "" : "s", list));
+}
+
+void Args::fail_unknown(const Argument& arg) const {
+  std::vector<std::string> names = param_names();
+  std::string list;
+  for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+  std::string guess = closest_name(arg.name, names);
+  throw SceneError(
+      written_at(arg),
+      fmt::format("unknown argument '{}' for {}{}; accepted: {}", arg.name, call_.name,
+                  guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess), list));
+}
+
+std::vector<std::string> Args::param_names() const {
+  std::vector<std::string> names;
+  for (size_t i = 0; i < param_count_; ++i) names.emplace_back(params_[i].name);
+  return names;
+}
+
+const Argument* Args::find(std::string_view name) const {
+  size_t i = index_of(name);
+  if (i == param_count_) return nullptr;
+  const Argument* arg = params_[i].bound;
+  return arg && arg->value.kind != Value::Kind::Undef ? arg : nullptr;
 }
 
 const Value& Args::value(std::string_view name) const { return find(name)->value; }
 
-SourceLoc Args::name_loc(std::string_view name) const {
-  const Argument* arg = find(name);
-  return arg->name.empty() ? arg->value.loc : arg->name_loc;
-}
+Loc Args::name_loc(std::string_view name) const { return written_at(*find(name)); }
 
 std::string Args::what(std::string_view name) const {
   return fmt::format("argument '{}' of {}", name, call_.name);

@@ -4,6 +4,8 @@
 // failure is a SceneError at the offending argument: an unknown name lists the
 // accepted ones, a wrong type names the expected one.
 
+#include <array>
+#include <cstddef>
 #include <glm/glm.hpp>
 #include <initializer_list>
 #include <string>
@@ -27,7 +29,7 @@ class Args {
   // Precondition: has(name).
   const Value& value(std::string_view name) const;
   // Where the argument's name is written (its value's location if positional).
-  SourceLoc name_loc(std::string_view name) const;
+  Loc name_loc(std::string_view name) const;
 
   double number(std::string_view name, double fallback) const;
   bool boolean(std::string_view name, bool fallback) const;
@@ -42,11 +44,26 @@ class Args {
   [[noreturn]] void fail_type(std::string_view name, std::string_view expected) const;
 
  private:
+  // One accepted parameter and the argument bound to it, if any.
+  struct Param {
+    std::string_view name;
+    const Argument* bound;
+  };
+  // More than any module accepts, $fn, $fa and $fs included. A fixed array
+  // because an Args is made for every call of a scene.
+  static constexpr size_t kMaxParams = 16;
+
+  void add_param(std::string_view name);
+  size_t index_of(std::string_view name) const;  // param_count_ when not accepted
+  [[noreturn]] void fail_positional(const Argument& arg,
+                                    std::initializer_list<std::string_view> positional) const;
+  [[noreturn]] void fail_unknown(const Argument& arg) const;
+  std::vector<std::string> param_names() const;
   const Argument* find(std::string_view name) const;
 
   const Call& call_;
-  std::vector<const Argument*> bound_;  // parallel to names_
-  std::vector<std::string> names_;
+  std::array<Param, kMaxParams> params_;  // only the first param_count_ are set
+  size_t param_count_ = 0;
 };
 
 // "a string", "a vector of 2 elements", ...

@@ -5,8 +5,11 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <system_error>
 
 namespace capsim::scene_file {
@@ -17,16 +20,50 @@ bool is_ident_start(char c) {
 }
 bool is_digit(char c) { return c >= '0' && c <= '9'; }
 bool is_ident_char(char c) { return is_ident_start(c) || is_digit(c); }
+// The escapes decode_string knows: \" \\ \n \t \r.
+bool is_supported_escape(char c) {
+  return c == '"' || c == '\\' || c == 'n' || c == 't' || c == 'r';
+}
+
+constexpr std::string_view kSingleSymbols = "()[]{},;=+-*/%!#<>?:.^&|~";
+constexpr std::string_view kDoubleSymbols[] = {"==", "!=", "<=", ">=", "&&", "||"};
+
+// kSingleSymbols indexed by byte: most tokens are symbols, so each costs one lookup.
+constexpr std::array<bool, 256> kIsSingleSymbol = [] {
+  std::array<bool, 256> table{};
+  for (char c : kSingleSymbols) table[static_cast<unsigned char>(c)] = true;
+  return table;
+}();
+
+bool is_double_symbol(char first, char second) {
+  for (std::string_view op : kDoubleSymbols) {
+    if (op[0] == first && op[1] == second) return true;
+  }
+  return false;
+}
+
+// The value of `text` when it is a whole number of at most 15 digits, which a
+// double holds exactly: the same value from_chars gives, without its cost for
+// the most common numbers of scene files.
+std::optional<double> exact_whole_number(std::string_view text) {
+  if (text.size() > 15) return std::nullopt;
+  std::uint64_t value = 0;
+  for (char c : text) {
+    if (!is_digit(c)) return std::nullopt;
+    value = value * 10 + static_cast<std::uint64_t>(c - '0');
+  }
+  return static_cast<double>(value);
+}
 
 // Walks the text keeping line and column (1-based; columns count bytes).
 class Lexer {
  public:
-  Lexer(std::string_view text, std::shared_ptr<const std::string> file)
-      : text_(text), file_(std::move(file)) {}
+  Lexer(std::string_view text, const std::shared_ptr<const std::string>& file)
+      : text_(text), file_(&file) {}
 
   std::vector<Token> run() {
     // A UTF-8 byte-order mark written by some editors is not part of the scene.
-    if (text_.substr(0, 3) == "\xEF\xBB\xBF") advance(3);
+    if (text_.starts_with("\xEF\xBB\xBF")) advance_on_line(3);
     std::vector<Token> tokens;
     for (;;) {
       skip_space_and_comments();
@@ -41,10 +78,10 @@ class Lexer {
   }
 
  private:
-  SourceLoc here() const { return SourceLoc{file_, line_, col_}; }
-  char peek(size_t ahead = 0) const {
-    return pos_ + ahead < text_.size() ? text_[pos_ + ahead] : '\0';
-  }
+  Loc here() const { return Loc{file_, line_, col_}; }
+  // The character at `index`, '\0' past the end.
+  char at(size_t index) const { return index < text_.size() ? text_[index] : '\0'; }
+  char peek(size_t ahead = 0) const { return at(pos_ + ahead); }
   void advance(size_t n = 1) {
     for (size_t i = 0; i < n && pos_ < text_.size(); ++i, ++pos_) {
       if (text_[pos_] == '\n') {
@@ -55,16 +92,30 @@ class Lexer {
       }
     }
   }
+  // advance(n) for the common case of n characters known to hold no newline.
+  void advance_on_line(size_t n) {
+    pos_ += n;
+    col_ += static_cast<int>(n);
+  }
+  // The next `length` characters as a token's text, consumed.
+  std::string_view take_on_line(size_t length) {
+    std::string_view taken = text_.substr(pos_, length);
+    advance_on_line(length);
+    return taken;
+  }
 
   void skip_space_and_comments() {
     while (pos_ < text_.size()) {
       char c = peek();
-      if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v') {
+      if (c == '\n') {
         advance();
+      } else if (c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v') {
+        advance_on_line(1);
       } else if (c == '/' && peek(1) == '/') {
-        while (pos_ < text_.size() && peek() != '\n') advance();
+        size_t newline = text_.find('\n', pos_);
+        advance_on_line((newline == std::string_view::npos ? text_.size() : newline) - pos_);
       } else if (c == '/' && peek(1) == '*') {
-        SourceLoc start = here();
+        Loc start = here();
         advance(2);
         while (pos_ < text_.size() && !(peek() == '*' && peek(1) == '/')) advance();
         if (pos_ >= text_.size())
@@ -82,9 +133,9 @@ class Lexer {
     char c = peek();
     if (is_ident_start(c)) {
       token.kind = TokenKind::Identifier;
-      size_t start = pos_;
-      while (pos_ < text_.size() && is_ident_char(peek())) advance();
-      token.text = std::string(text_.substr(start, pos_ - start));
+      size_t end = pos_ + 1;
+      while (is_ident_char(at(end))) ++end;
+      token.text = take_on_line(end - pos_);
     } else if (is_digit(c) || (c == '.' && is_digit(peek(1)))) {
       lex_number(token);
     } else if (c == '"') {
@@ -95,22 +146,32 @@ class Lexer {
     return token;
   }
 
-  void lex_number(Token& token) {
-    token.kind = TokenKind::Number;
-    size_t start = pos_;
-    while (is_digit(peek())) advance();
-    if (peek() == '.') {
-      advance();
-      while (is_digit(peek())) advance();
+  // Where the number starting at pos_ ends; numbers never span lines.
+  size_t number_end() const {
+    size_t end = pos_;
+    while (is_digit(at(end))) ++end;
+    if (at(end) == '.') {
+      ++end;
+      while (is_digit(at(end))) ++end;
     }
-    if ((peek() == 'e' || peek() == 'E') &&
-        (is_digit(peek(1)) || ((peek(1) == '+' || peek(1) == '-') && is_digit(peek(2))))) {
-      advance(2);
-      while (is_digit(peek())) advance();
+    char e = at(end), sign = at(end + 1);
+    if ((e == 'e' || e == 'E') &&
+        (is_digit(sign) || ((sign == '+' || sign == '-') && is_digit(at(end + 2))))) {
+      end += 2;
+      while (is_digit(at(end))) ++end;
     }
     // "1e", "2x" or "1.2.3" are neither a number nor a number and a name.
-    while (is_ident_char(peek()) || peek() == '.') advance();
-    token.text = std::string(text_.substr(start, pos_ - start));
+    while (is_ident_char(at(end)) || at(end) == '.') ++end;
+    return end;
+  }
+
+  void lex_number(Token& token) {
+    token.kind = TokenKind::Number;
+    token.text = take_on_line(number_end() - pos_);
+    if (std::optional<double> whole = exact_whole_number(token.text)) {
+      token.number = *whole;
+      return;
+    }
     const char* first = token.text.data();
     const char* last = first + token.text.size();
     auto [end, ec] = std::from_chars(first, last, token.number);
@@ -123,69 +184,57 @@ class Lexer {
     }
   }
 
+  // Checks the string's escapes; its text stays as written (decode_string).
   void lex_string(Token& token) {
     token.kind = TokenKind::String;
     advance();  // opening quote
+    size_t start = pos_;
     for (;;) {
       if (pos_ >= text_.size()) {
         throw SceneError(token.loc, "unterminated string: '\"' has no closing '\"'");
       }
       char c = peek();
       if (c == '"') {
+        token.text = text_.substr(start, pos_ - start);
         advance();
         return;
       }
       if (c == '\\') {
-        SourceLoc escape_loc = here();
         char e = peek(1);
-        switch (e) {
-          case '"': token.text += '"'; break;
-          case '\\': token.text += '\\'; break;
-          case 'n': token.text += '\n'; break;
-          case 't': token.text += '\t'; break;
-          case 'r': token.text += '\r'; break;
-          default:
-            if (pos_ + 1 >= text_.size()) {
-              throw SceneError(token.loc, "unterminated string: '\"' has no closing '\"'");
-            }
-            throw SceneError(escape_loc,
-                             fmt::format("unsupported escape '\\{}' in string; supported: "
-                                         "\\\" \\\\ \\n \\t \\r",
-                                         e));
+        if (!is_supported_escape(e)) {
+          if (pos_ + 1 >= text_.size()) {
+            throw SceneError(token.loc, "unterminated string: '\"' has no closing '\"'");
+          }
+          throw SceneError(here(), fmt::format("unsupported escape '\\{}' in string; supported: "
+                                               "\\\" \\\\ \\n \\t \\r",
+                                               e));
         }
         advance(2);
         continue;
       }
-      token.text += c;
       advance();
     }
   }
 
   void lex_symbol(Token& token) {
-    static constexpr std::string_view kSingle = "()[]{},;=+-*/%!#<>?:.^&|~";
-    static constexpr std::string_view kDouble[] = {"==", "!=", "<=", ">=", "&&", "||"};
     token.kind = TokenKind::Symbol;
-    for (std::string_view op : kDouble) {
-      if (text_.substr(pos_, 2) == op) {
-        token.text = std::string(op);
-        advance(2);
-        return;
-      }
-    }
     char c = peek();
-    if (kSingle.find(c) == std::string_view::npos) {
+    if (is_double_symbol(c, peek(1))) {
+      token.text = take_on_line(2);
+      return;
+    }
+    if (!kIsSingleSymbol[static_cast<unsigned char>(c)]) {
       unsigned char u = static_cast<unsigned char>(c);
       if (u >= 0x21 && u < 0x7f) {
         throw SceneError(token.loc, fmt::format("unexpected character '{}'", c));
       }
       throw SceneError(token.loc, fmt::format("unexpected byte 0x{:02X}", u));
     }
-    token.text = std::string(1, c);
-    advance();
+    token.text = take_on_line(1);
   }
 
   std::string_view text_;
-  std::shared_ptr<const std::string> file_;
+  const std::shared_ptr<const std::string>* file_;
   size_t pos_ = 0;
   int line_ = 1;
   int col_ = 1;
@@ -193,15 +242,33 @@ class Lexer {
 
 }  // namespace
 
-std::vector<Token> tokenize(std::string_view text, std::shared_ptr<const std::string> file) {
-  return Lexer(text, std::move(file)).run();
+std::vector<Token> tokenize(std::string_view text, const std::shared_ptr<const std::string>& file) {
+  return Lexer(text, file).run();
+}
+
+std::string decode_string(std::string_view raw) {
+  std::string decoded;
+  decoded.reserve(raw.size());
+  for (size_t i = 0; i < raw.size(); ++i) {
+    if (raw[i] != '\\' || i + 1 == raw.size()) {
+      decoded += raw[i];
+      continue;
+    }
+    switch (raw[++i]) {
+      case 'n': decoded += '\n'; break;
+      case 't': decoded += '\t'; break;
+      case 'r': decoded += '\r'; break;
+      default: decoded += raw[i]; break;  // '"' or '\\'
+    }
+  }
+  return decoded;
 }
 
 std::string describe(const Token& token) {
   switch (token.kind) {
     case TokenKind::Identifier: return fmt::format("'{}'", token.text);
     case TokenKind::Number: return fmt::format("number {}", token.text);
-    case TokenKind::String: return fmt::format("string \"{}\"", token.text);
+    case TokenKind::String: return fmt::format("string \"{}\"", decode_string(token.text));
     case TokenKind::Symbol: return fmt::format("'{}'", token.text);
     case TokenKind::End: return "end of file";
   }

@@ -12,19 +12,43 @@
 
 namespace capsim::scene_file {
 
+// Where a token, value or call stands in the file being parsed. A parse holds
+// one of these per token, value and call, so instead of a SourceLoc (whose
+// shared file name costs an atomic reference count on every copy) it points at
+// the one shared name the parse owns. It becomes a SourceLoc wherever it leaves
+// the parse: in a SceneError or in the Scene.
+struct Loc {
+  const std::shared_ptr<const std::string>* file = nullptr;
+  int line = 0;  // 1-based
+  int col = 0;   // 1-based, in bytes
+
+  operator SourceLoc() const { return SourceLoc{file ? *file : nullptr, line, col}; }
+};
+
 enum class TokenKind { Identifier, Number, String, Symbol, End };
 
+// Plain data viewing the scanned text, so tokens are copied and stored without
+// allocating.
 struct Token {
   TokenKind kind = TokenKind::End;
-  std::string text;   // identifier, decoded string, symbol ("(", "==", ...) or number as written
+  // Identifier, symbol ("(", "==", ...) or number as written; for String the
+  // characters between the quotes with their escapes as written (decode_string
+  // gives the value).
+  std::string_view text;
   double number = 0;  // for Number: the value, always finite
-  SourceLoc loc;
+  Loc loc;
 };
 
 // The whole file as tokens, ending with one End token placed just after the last
-// character. Throws SceneError on unterminated strings and comments, stray
-// characters, malformed numbers and numbers outside the range of a double.
-std::vector<Token> tokenize(std::string_view text, std::shared_ptr<const std::string> file);
+// character. The tokens view `text` and point at `file`: both must outlive them
+// and everything read from them. Throws SceneError on unterminated strings and
+// comments, stray characters, bad escapes, malformed numbers and numbers outside
+// the range of a double.
+std::vector<Token> tokenize(std::string_view text, const std::shared_ptr<const std::string>& file);
+
+// The value of a String token's text, its escapes (already checked by tokenize)
+// decoded.
+std::string decode_string(std::string_view raw);
 
 // How a token reads in an error message: `'foo'`, `number 1.5`, `end of file`.
 std::string describe(const Token& token);

@@ -99,7 +99,7 @@ glm::dmat4 euler_rotation(const glm::dvec3& a) {
 
 // Of two given arguments, the one written later (where a conflict is noticed).
 std::string_view later(const Args& args, std::string_view a, std::string_view b) {
-  SourceLoc la = args.name_loc(a), lb = args.name_loc(b);
+  Loc la = args.name_loc(a), lb = args.name_loc(b);
   return (la.line > lb.line || (la.line == lb.line && la.col > lb.col)) ? a : b;
 }
 
@@ -313,7 +313,7 @@ double unit_component(const Value& item, const std::string& what) {
   return item.number;
 }
 
-std::string unknown_color_message(const std::string& text) {
+std::string unknown_color_message(std::string_view text) {
   std::string guess = closest_name(text, color_names());
   return fmt::format(
       "unknown colour \"{}\"{}; use a CSS/SVG colour name (e.g. \"red\", "

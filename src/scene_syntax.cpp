@@ -4,7 +4,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
+#include <iterator>
 #include <string_view>
 
 namespace capsim::scene_file {
@@ -40,10 +43,11 @@ bool is_operator(const Token& t) {
 
 class Reader {
  public:
-  explicit Reader(const std::vector<Token>& tokens) : tokens_(tokens) {}
+  Reader(const std::vector<Token>& tokens, std::pmr::memory_resource* memory)
+      : tokens_(tokens), memory_(memory) {}
 
-  std::vector<Call> file(SourceLoc* end) {
-    std::vector<Call> calls;
+  std::pmr::vector<Call> file(Loc* end) {
+    std::pmr::vector<Call> calls(memory_);
     while (peek().kind != TokenKind::End) statement(calls);
     if (end) *end = peek().loc;
     return calls;
@@ -69,7 +73,7 @@ class Reader {
 
   // statement := ';' | '{' statement* '}' | modifier* call
   // Appends what it reads to `out` (a bare block's statements go straight in).
-  void statement(std::vector<Call>& out) {
+  void statement(std::pmr::vector<Call>& out) {
     if (at_symbol(";")) {
       take();
       return;
@@ -79,17 +83,17 @@ class Reader {
       block_rest(open, out);
       return;
     }
-    std::vector<Modifier> modifiers;
+    Call call(memory_);
     while (peek().kind == TokenKind::Symbol &&
            (peek().text == "%" || peek().text == "#" || peek().text == "!" || peek().text == "*")) {
       const Token& m = take();
-      modifiers.push_back(Modifier{m.text[0], m.loc});
+      call.modifiers.push_back(Modifier{m.text[0], m.loc});
     }
     const Token& head = peek();
     if (head.kind != TokenKind::Identifier) {
-      if (!modifiers.empty()) {
+      if (!call.modifiers.empty()) {
         fail(head, fmt::format("expected an object after modifier '{}', got {}",
-                               modifiers.back().symbol, describe(head)));
+                               call.modifiers.back().symbol, describe(head)));
       }
       fail(head, fmt::format("expected an object such as sphere(), cube() or cylinder(), got {}",
                              describe(head)));
@@ -104,8 +108,6 @@ class Reader {
     if (!at_symbol("(", 1)) {
       fail(peek(1), fmt::format("expected '(' after '{}', got {}", head.text, describe(peek(1))));
     }
-    Call call;
-    call.modifiers = std::move(modifiers);
     call.name = head.text;
     call.loc = head.loc;
     take();
@@ -115,8 +117,8 @@ class Reader {
   }
 
   // After an opening '{': statements up to the matching '}'.
-  void block_rest(const Token& open, std::vector<Call>& out) {
-    SourceLoc open_loc = open.loc;
+  void block_rest(const Token& open, std::pmr::vector<Call>& out) {
+    Loc open_loc = open.loc;
     while (!at_symbol("}")) {
       if (peek().kind == TokenKind::End) {
         fail(peek(), fmt::format("missing '}}': the '{{' at {}:{} is not closed", open_loc.line,
@@ -149,29 +151,27 @@ class Reader {
       fail(next, fmt::format("expected ';', '{{' or a child object after {}(...), got {}",
                              call.name, describe(next)));
     }
-    std::vector<Call> child;
-    statement(child);
-    call.children = std::move(child);
+    statement(call.children);
   }
 
   // arguments := '(' [argument {',' argument} [',']] ')'
   void arguments(Call& call) {
     const Token& open = take();  // '('
-    SourceLoc open_loc = open.loc;
+    Loc open_loc = open.loc;
     while (!at_symbol(")")) {
       if (peek().kind == TokenKind::End) {
         fail(peek(), fmt::format("missing ')': the '(' of {} at {}:{} is not closed", call.name,
                                  open_loc.line, open_loc.col));
       }
-      Argument arg;
+      std::string_view name;
+      Loc name_loc;
       if (peek().kind == TokenKind::Identifier && at_symbol("=", 1)) {
-        const Token& name = take();
-        arg.name = name.text;
-        arg.name_loc = name.loc;
+        const Token& name_token = take();
+        name = name_token.text;
+        name_loc = name_token.loc;
         take();  // '='
       }
-      arg.value = value();
-      call.args.push_back(std::move(arg));
+      call.args.push_back(Argument{name, name_loc, value()});
       if (at_symbol(",")) {
         take();
       } else if (!at_symbol(")")) {
@@ -202,8 +202,7 @@ class Reader {
   // value := number | '-' number | string | true | false | undef | '[' values ']'
   Value value() {
     const Token& t = peek();
-    Value v;
-    v.loc = t.loc;
+    Value v(memory_, t.loc);
     switch (t.kind) {
       case TokenKind::Number:
         take();
@@ -213,7 +212,7 @@ class Reader {
       case TokenKind::String:
         take();
         v.kind = Value::Kind::String;
-        v.string = t.text;
+        v.string = string_value(t.text);
         return v;
       case TokenKind::Identifier: return identifier_value();
       case TokenKind::End: fail(t, "expected a value, got end of file");
@@ -234,12 +233,13 @@ class Reader {
     if (t.text == "[") {
       take();
       v.kind = Value::Kind::Vector;
+      size_t first = pending_items_.size();
       while (!at_symbol("]")) {
         if (peek().kind == TokenKind::End) {
           fail(peek(),
                fmt::format("missing ']': the '[' at {}:{} is not closed", v.loc.line, v.loc.col));
         }
-        v.items.push_back(value());
+        pending_items_.push_back(value());
         if (at_symbol(",")) {
           take();
         } else if (!at_symbol("]")) {
@@ -247,6 +247,7 @@ class Reader {
         }
       }
       take();
+      take_pending_items(first, v.items);
       return v;
     }
     if (t.text == "-" || t.text == "+" || t.text == "!" || t.text == "(") {
@@ -257,10 +258,26 @@ class Reader {
     fail(t, fmt::format("expected a value, got {}", describe(t)));
   }
 
+  // The value of a string written as `raw`: a view of the scene text itself
+  // unless escapes must be decoded, then of a decoded copy in the parse's memory.
+  std::string_view string_value(std::string_view raw) const {
+    if (raw.find('\\') == std::string_view::npos) return raw;
+    std::string decoded = decode_string(raw);
+    char* kept = static_cast<char*>(memory_->allocate(decoded.size(), 1));
+    std::copy(decoded.begin(), decoded.end(), kept);
+    return std::string_view(kept, decoded.size());
+  }
+
+  // Moves the pending items from index `first` on into `items`, sized exactly.
+  void take_pending_items(size_t first, std::pmr::vector<Value>& items) {
+    auto begin = pending_items_.begin() + static_cast<std::ptrdiff_t>(first);
+    items.assign(std::make_move_iterator(begin), std::make_move_iterator(pending_items_.end()));
+    pending_items_.erase(begin, pending_items_.end());
+  }
+
   Value identifier_value() {
     const Token& t = take();
-    Value v;
-    v.loc = t.loc;
+    Value v(memory_, t.loc);
     if (t.text == "true" || t.text == "false") {
       v.kind = Value::Kind::Bool;
       v.boolean = t.text == "true";
@@ -284,13 +301,20 @@ class Reader {
   }
 
   const std::vector<Token>& tokens_;
+  std::pmr::memory_resource* memory_;
   size_t pos_ = 0;
+  // The items of the vectors being read, innermost last. Collecting them here
+  // rather than growing each vector's own list gives every vector a single
+  // allocation of its final size (a monotonic resource never reuses what a
+  // growing list leaves behind).
+  std::vector<Value> pending_items_;
 };
 
 }  // namespace
 
-std::vector<Call> read_calls(const std::vector<Token>& tokens, SourceLoc* end) {
-  return Reader(tokens).file(end);
+std::pmr::vector<Call> read_calls(const std::vector<Token>& tokens,
+                                  std::pmr::memory_resource* memory, Loc* end) {
+  return Reader(tokens, memory).file(end);
 }
 
 }  // namespace capsim::scene_file

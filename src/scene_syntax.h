@@ -5,7 +5,9 @@
 // beyond its CSG export (variables, expressions, loops, modules, include) is
 // refused here with its location. What the calls mean is decided in parser.cpp.
 
+#include <memory_resource>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "capsim/scene.h"
@@ -13,44 +15,60 @@
 
 namespace capsim::scene_file {
 
+// Calls live no longer than the parse that reads them: names and strings view
+// the scene text (or, for a string with escapes, its decoded copy in the parse's
+// memory), locations point at the parse's file name (see Loc), and every list
+// comes from the memory resource given to read_calls. A large scene has
+// several lists per statement; a monotonic resource hands them out and frees
+// them all at once far more cheaply than the general heap. The constructors
+// take that resource so that no list is ever made without it (moving a list
+// into one made from another resource would copy it element by element).
+
 // A literal argument value. `undef` is kept as its own kind: it means "not given".
 struct Value {
   enum class Kind { Undef, Bool, Number, String, Vector };
+  Value(std::pmr::memory_resource* memory, Loc where) : items(memory), loc(where) {}
+
   Kind kind = Kind::Undef;
   bool boolean = false;
-  double number = 0;  // finite
-  std::string string;
-  std::vector<Value> items;
-  SourceLoc loc;  // first token of the value (the '-' of a negative number)
+  double number = 0;        // finite
+  std::string_view string;  // decoded
+  std::pmr::vector<Value> items;
+  Loc loc;  // first token of the value (the '-' of a negative number)
 };
 
 struct Argument {
-  std::string name;  // empty for a positional argument
-  SourceLoc name_loc;
+  std::string_view name;  // empty for a positional argument
+  Loc name_loc;
   Value value;
 };
 
 struct Modifier {
   char symbol = '#';  // one of % # ! *
-  SourceLoc loc;
+  Loc loc;
 };
 
 // One module instantiation: `%translate([1, 0, 0]) { ... }`.
 struct Call {
-  std::string name;
-  SourceLoc loc;  // of the name
-  std::vector<Modifier> modifiers;
-  std::vector<Argument> args;
-  std::vector<Call> children;
+  explicit Call(std::pmr::memory_resource* memory)
+      : modifiers(memory), args(memory), children(memory) {}
+
+  std::string_view name;
+  Loc loc;  // of the name
+  std::pmr::vector<Modifier> modifiers;
+  std::pmr::vector<Argument> args;
+  std::pmr::vector<Call> children;
   // Where the children start ('{' or the first token of a single child); only
   // meaningful when has_body.
-  SourceLoc body_loc;
+  Loc body_loc;
   bool has_body = false;  // false for `name(...);`
 };
 
-// The top-level calls of a file in order. `end` receives the End token's location
-// (for errors about the file as a whole). Throws SceneError on any syntax outside
-// the supported subset.
-std::vector<Call> read_calls(const std::vector<Token>& tokens, SourceLoc* end);
+// The top-level calls of a file in order, their lists drawn from `memory`, which
+// must outlive them. `end` receives the End token's location (for errors about
+// the file as a whole). Throws SceneError on any syntax outside the supported
+// subset.
+std::pmr::vector<Call> read_calls(const std::vector<Token>& tokens,
+                                  std::pmr::memory_resource* memory, Loc* end);
 
 }  // namespace capsim::scene_file
