@@ -4,10 +4,27 @@
 #include "cli_commands.h"
 
 #include <fmt/core.h>
+#include <malloc.h>
 
 #include <exception>
 
+namespace {
+
+// Keeps freed memory for reuse: blocks up to glibc's limit for the setting
+// (32 MiB) come from the heap rather than from mappings of their own, and the
+// heap is never trimmed. Parsing a large scene frees megabytes that voxel
+// generation, the tracer and the image then reuse; returned to the system,
+// every page of theirs would be faulted in and zeroed again, which cost about
+// a tenth of a primary-only megapixel render of a 6,859-sphere scene.
+void keep_freed_memory() {
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  keep_freed_memory();
   CLI::App app{
       "capsim: a cycle-level simulator of Fujitsu's Cellular Array Processor (CAP)\n"
       "running the CSG ray tracer of Murakami, Sato and Hirota."};

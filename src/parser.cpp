@@ -318,7 +318,11 @@ Scene parse_scene(std::string_view text, const std::string& file_name) {
   // outlives them.
   std::pmr::monotonic_buffer_resource memory;
   std::pmr::vector<Call> calls = scene_file::read_calls(tokens, &memory, &end);
-  return Interpreter(file).run(calls, tokens.size() > 1, end);
+  const bool has_statements = tokens.size() > 1;
+  // The calls view the text, not the tokens: the tokens' memory can go back to
+  // the heap for the scene about to be built.
+  std::vector<scene_file::Token>().swap(tokens);
+  return Interpreter(file).run(calls, has_statements, end);
 }
 
 Scene parse_scene_file(const std::string& path) {
