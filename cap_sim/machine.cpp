@@ -8,7 +8,6 @@
 #include "video_bus.h"
 
 #include <fmt/core.h>
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <memory>
@@ -107,15 +106,8 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
   result.screen = compose_screen(layout, video);
 
   result.pixel_cycles.assign(static_cast<std::size_t>(layout.width()) * layout.height(), 0.0f);
-  tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t c) {  // disjoint pixels
-    const auto& cell = cells[c];
-    const CellWindow& w = cell->window();
-    const std::vector<std::uint64_t>& cycles = cell->pixel_cycles();
-    for (int k = 0; k < w.pixel_count(); ++k) {
-      const ScreenPixel p = w.screen_pixel(k);
-      result.pixel_cycles[static_cast<std::size_t>(p.y) * layout.width() + p.x] =
-          static_cast<float>(cycles[k]);
-    }
+  for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
+    result.pixel_cycles[s] = static_cast<float>(cells[c]->pixel_cycles()[k]);
   });
   return result;
 }

@@ -7,9 +7,27 @@
 
 #include "capsim/render.h"
 
+#include <tbb/parallel_for.h>
+
+#include <cstddef>
 #include <vector>
 
 namespace capsim::sim {
+
+// Calls put(c, k, s) for every pixel k of every cell c's window, where s is that
+// pixel's row-major index on the screen. Cells run in parallel, so put may
+// write only what belongs to screen pixel s (windows never overlap in a valid
+// layout; compose_screen checks that).
+template <class Put>
+void for_each_window_pixel(const WindowLayout& layout, Put put) {
+  tbb::parallel_for(0, layout.grid().cell_count(), [&](CellId c) {
+    const CellWindow& window = layout.window(c);
+    for (int k = 0; k < window.pixel_count(); ++k) {
+      const ScreenPixel p = window.screen_pixel(k);
+      put(c, k, static_cast<std::size_t>(p.y) * layout.width() + p.x);
+    }
+  });
+}
 
 // video[c] holds cell c's pixels: pixel k at (k, 0). Throws std::logic_error if a
 // screen pixel is written twice or never, or a video memory has the wrong size.

@@ -2,10 +2,13 @@
 // screen size and cell grid (exhaustive on small sizes), and the modes follow the
 // issue's rules.
 
+#include "video_bus.h"
 #include "window_controller.h"
 
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <stdexcept>
 #include <vector>
 
 namespace capsim::sim {
@@ -94,6 +97,47 @@ TEST(WindowController, ParsesModeNames) {
   EXPECT_EQ(parse_pixel_mode("line"), PixelMode::Line);
   EXPECT_EQ(parse_pixel_mode("block"), PixelMode::Block);
   EXPECT_EQ(parse_pixel_mode("Dot"), std::nullopt);
+}
+
+}  // namespace
+}  // namespace capsim::sim
+
+namespace capsim::sim {
+namespace {
+
+// The scatter that the video bus and the cycles screen share visits every
+// screen pixel once, naming the cell and video-memory pixel that own it.
+TEST(VideoBus, EveryWindowPixelIsVisitedOnceWithItsOwner) {
+  for (PixelMode mode : {PixelMode::Block, PixelMode::Line, PixelMode::Dot}) {
+    const WindowLayout layout(mode, CellGrid{3, 4}, 29, 17);
+    std::vector<std::atomic<int>> visits(29 * 17);
+    std::vector<PixelOwner> owner(29 * 17);
+    for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
+      ++visits[s];
+      owner[s] = {c, k};
+    });
+    for (int y = 0; y < 17; ++y)
+      for (int x = 0; x < 29; ++x) {
+        const std::size_t s = static_cast<std::size_t>(y) * 29 + x;
+        ASSERT_EQ(visits[s], 1) << to_string(mode) << " at " << x << "," << y;
+        ASSERT_EQ(owner[s], layout.owner({x, y})) << to_string(mode) << " at " << x << "," << y;
+      }
+  }
+}
+
+// A video memory whose size is not its window's is refused, naming the cell.
+TEST(VideoBus, RefusesAVideoMemoryOfTheWrongSize) {
+  const WindowLayout layout(PixelMode::Dot, CellGrid{2, 2}, 8, 8);
+  std::vector<Framebuffer> memories;
+  for (CellId c = 0; c < 4; ++c) memories.emplace_back(layout.window(c).pixel_count() - (c == 2), 1);
+  std::vector<const Framebuffer*> video;
+  for (const Framebuffer& m : memories) video.push_back(&m);
+  try {
+    compose_screen(layout, video);
+    FAIL() << "a short video memory was accepted";
+  } catch (const std::logic_error& e) {
+    EXPECT_STREQ(e.what(), "cell 2 video memory holds 15 pixels, its window 16");
+  }
 }
 
 }  // namespace
