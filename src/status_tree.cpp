@@ -104,7 +104,7 @@ StatusTree::StatusTree(const CsgNode& root, std::size_t primitive_count)
       continue;
     }
     const auto index = static_cast<std::int32_t>(nodes_.size());
-    nodes_.push_back({it.node->op, it.parent, it.side, kTruth[static_cast<int>(it.node->op)], 0, 0});
+    nodes_.push_back({it.parent, it.side, kTruth[static_cast<int>(it.node->op)], 0, 0});
     stack.push_back({it.node->right.get(), index, StatusNode::kRight});
     stack.push_back({it.node->left.get(), index, StatusNode::kLeft});
   }

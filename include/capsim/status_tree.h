@@ -15,19 +15,14 @@ namespace capsim {
 
 struct StatusNode {
   // StatusSelf, StatusLeft and StatusRight are bits of `status`; left and right
-  // together, (status & 3), index the operator's truth table.
+  // together, (status & 3), index the Operator's truth table.
   static constexpr std::uint8_t kRight = 1, kLeft = 2, kSelf = 4;
 
-  CsgOp op = CsgOp::Union;
-  std::int32_t parent = -1;           // -1 at the root
+  std::int32_t parent = -1;          // PointerToParent; -1 at the root
   std::uint8_t parent_side = kLeft;  // the parent's status it sets: kLeft or kRight
-  std::uint8_t truth = 0;             // op as a truth table: bit (2 * left + right) is self
+  std::uint8_t truth = 0;            // Operator, as a truth table: bit (2 * left + right) is self
   std::uint8_t status = 0;
   std::uint32_t epoch = 0;  // status is valid only when equal to the tree's epoch
-
-  bool status_self() const { return status & kSelf; }
-  bool status_left() const { return status & kLeft; }
-  bool status_right() const { return status & kRight; }
 };
 
 // Where a primitive's leaf hangs: its parent operator node and side. A primitive
