@@ -36,9 +36,7 @@ Process Cell::run_frame() {
   // host threads traced them ahead; nothing reaches a cell while it traces, so
   // its clock advances once by their sum (the same time as pixel by pixel,
   // without an event per pixel) and its video memory takes them all at the end.
-  Cycles tracing;
-  for (std::uint64_t cycles : traced_.pixel_cycles) tracing += Cycles(cycles);
-  co_await wire_.kernel.delay(tracing);
+  co_await wire_.kernel.delay(traced_.work.total());
   video_memory_ = std::move(traced_.samples);
   record_.work = traced_.work;
   record_.rays = traced_.rays;
