@@ -181,6 +181,21 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
   }
 }
 
+// The voxel entries of a world-axis box b, as (voxel index) appended to out: the
+// plain bounding-box placement that Algorithm-3 is measured against.
+void place_bounding_box(const Aabb& b, const Aabb& u, int n, const glm::dvec3& vs, double eps,
+                        std::vector<std::uint32_t>& out) {
+  const glm::ivec3 lo{clamp_index((b.lo.x - eps - u.lo.x) / vs.x, n),
+                      clamp_index((b.lo.y - eps - u.lo.y) / vs.y, n),
+                      clamp_index((b.lo.z - eps - u.lo.z) / vs.z, n)};
+  const glm::ivec3 hi{clamp_index((b.hi.x + eps - u.lo.x) / vs.x, n),
+                      clamp_index((b.hi.y + eps - u.lo.y) / vs.y, n),
+                      clamp_index((b.hi.z + eps - u.lo.z) / vs.z, n)};
+  for (int z = lo.z; z <= hi.z; ++z)
+    for (int y = lo.y; y <= hi.y; ++y)
+      for (int x = lo.x; x <= hi.x; ++x) out.push_back(static_cast<std::uint32_t>((z * n + y) * n + x));
+}
+
 // Every primitive's voxels, primitives in file order, in one array: primitive
 // p's are voxels[start[p]] up to voxels[start[p + 1]].
 struct Placements {
@@ -250,21 +265,7 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
   Placements placements;
   placements.start.reserve(prims.size() + 1);
   for (std::size_t i = 0; i < prims.size(); ++i) {
-    if (!placed[i]) {
-      placements.end_primitive();
-      continue;
-    }
-    const Aabb& b = prims[i].world_bounds;
-    const glm::ivec3 lo{clamp_index((b.lo.x - eps - universe.lo.x) / vs.x, n),
-                        clamp_index((b.lo.y - eps - universe.lo.y) / vs.y, n),
-                        clamp_index((b.lo.z - eps - universe.lo.z) / vs.z, n)};
-    const glm::ivec3 hi{clamp_index((b.hi.x + eps - universe.lo.x) / vs.x, n),
-                        clamp_index((b.hi.y + eps - universe.lo.y) / vs.y, n),
-                        clamp_index((b.hi.z + eps - universe.lo.z) / vs.z, n)};
-    for (int z = lo.z; z <= hi.z; ++z)
-      for (int y = lo.y; y <= hi.y; ++y)
-        for (int x = lo.x; x <= hi.x; ++x)
-          placements.voxels.push_back(static_cast<std::uint32_t>((z * n + y) * n + x));
+    if (placed[i]) place_bounding_box(prims[i].world_bounds, universe, n, vs, eps, placements.voxels);
     placements.end_primitive();
   }
   return build_grid(universe, n, placements);
