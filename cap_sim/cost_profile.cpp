@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -125,6 +126,7 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   p.cell.shading_eval = cell_us("shading_eval");
   p.cell.ray_other = cell_us("ray_other");
   p.cell.pixel_write = cell_us("pixel_write");
+  p.cell.aa_square = cell_us("aa_square");
   cell.refuse_unknown_keys();
 
   ObjectReader host(top.member("host_costs_us"), "host_costs_us", source);
@@ -145,6 +147,10 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   ObjectReader link(top.member("link"), "link", source);
   p.link.bits_per_second = link.count("bits_per_second");
   p.link.latency = us_to_cycles(link.number("latency_us", 0), hz);
+  const std::string topology = link.text("topology");
+  const std::optional<LinkTopology> t = parse_link_topology(topology);
+  if (!t) link.fail(link.where("topology"), fmt::format("'{}' must be \"mesh\" or \"torus\"", topology));
+  p.link.topology = *t;
   link.refuse_unknown_keys();
 
   p.cell_memory_bytes = top.count("cell_memory_bytes");
@@ -175,6 +181,14 @@ CostProfile load_cost_profile(const std::string& name_or_path) {
   return parse_cost_profile(text.str(), name_or_path);
 }
 
+std::optional<LinkTopology> parse_link_topology(const std::string& text) {
+  if (text == "mesh") return LinkTopology::Mesh;
+  if (text == "torus") return LinkTopology::Torus;
+  return std::nullopt;
+}
+
+const char* to_string(LinkTopology t) { return t == LinkTopology::Torus ? "torus" : "mesh"; }
+
 const char* to_string(CostCategory c) {
   switch (c) {
     case CostCategory::Intersection: return "intersection";
@@ -204,7 +218,7 @@ CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& c) {
   b[CostCategory::Dda] = ops.dda_setups * c.dda_setup + ops.dda_steps * c.dda_step;
   b[CostCategory::Csg] = ops.tree_visits * c.tree_visit + ops.hits_sorted * c.hit_sort;
   b[CostCategory::Other] = ops.matvec * c.matvec + ops.shading_evals * c.shading_eval +
-                           ops.rays * c.ray_other + c.pixel_write;
+                           ops.rays * c.ray_other + ops.aa_squares * c.aa_square + c.pixel_write;
   return b;
 }
 

@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,8 @@ struct CellCosts {
   Cycles shading_eval;                      // one local illumination evaluation
   Cycles ray_other;                         // the fitted per-ray fixed work ("RO" of eq. 1-2)
   Cycles pixel_write;                       // one pixel stored in video memory
+  Cycles aa_square;                         // antialiasing: one square's corners compared
+                                            // with the threshold and averaged
 };
 
 // What the host pays for voxel generation (Algorithm-3).
@@ -43,9 +46,17 @@ struct BusCosts {
   Cycles latency;      // from the last byte on the bus to the data in the receivers' memory
 };
 
+// How the edge cells of the grid are wired: a mesh has links only between
+// adjacent cells; a torus also joins each row's ends and each column's ends, so
+// that the cells of one edge are neighbours of the opposite edge's.
+enum class LinkTopology { Mesh, Torus };
+std::optional<LinkTopology> parse_link_topology(const std::string& text);
+const char* to_string(LinkTopology t);
+
 struct LinkCosts {
   std::uint64_t bits_per_second = 0;
   Cycles latency;  // per hop, from the last bit sent to the message in the next cell
+  LinkTopology topology = LinkTopology::Mesh;
 };
 
 struct CostProfile {

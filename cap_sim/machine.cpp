@@ -2,6 +2,7 @@
 
 #include "cell.h"
 #include "command_bus.h"
+#include "corner_exchange.h"
 #include "event_kernel.h"
 #include "host.h"
 #include "capsim/progress.h"
@@ -11,6 +12,7 @@
 #include <tbb/task_arena.h>
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace capsim::sim {
@@ -48,6 +50,9 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
 
   EventKernel kernel;
   CommandBus bus(kernel, profile);
+  NeighbourLinks links(kernel, grid, profile);
+  std::optional<CornerExchange> exchange;
+  if (config.aa.depth > 0) exchange.emplace(layout);
   Timeline& timeline = result.timeline;
   const int host_track = timeline.add_track("host");
   const int bus_track = timeline.add_track("command bus");
@@ -60,7 +65,8 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     const CellPosition p = grid.position(id);
     const int track = timeline.add_track(fmt::format("cell[{},{}]", p.row, p.col));
     cells.push_back(std::make_unique<Cell>(id, layout.window(id), std::move(traced.at(id)), track,
-                                           Cell::Wiring{kernel, bus, timeline}));
+                                           Cell::Wiring{kernel, bus, links, grid, timeline,
+                                                        exchange ? &*exchange : nullptr}));
   }
 
   bus.on_delivery([&](const BusTransfer& t) {
@@ -73,6 +79,8 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     }
   });
 
+  links.on_delivery([&](const LinkMessage& m) { cells.at(m.to)->link_inbox().deliver(m); });
+
   kernel.spawn(host.run_frame());
   for (auto& cell : cells) kernel.spawn(cell->run_frame());
   kernel.run();
@@ -82,6 +90,19 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
   for (const BusTransfer& t : bus.log())
     timeline.span(bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, grid)),
                   t.receiver == kAllCells ? "broadcast" : "message", t.granted, t.released, t.bytes);
+
+  // One track per link direction that carried anything, after the cells'.
+  std::vector<int> link_tracks(static_cast<std::size_t>(grid.cell_count()) * 4, -1);
+  for (const LinkTraffic& t : links.traffic()) {
+    const CellPosition p = grid.position(t.cell);
+    link_tracks[static_cast<std::size_t>(t.cell) * 4 + static_cast<int>(t.direction)] =
+        timeline.add_track(fmt::format("link cell[{},{}] {}", p.row, p.col, to_string(t.direction)));
+  }
+  for (const LinkHop& h : links.hops())
+    timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)],
+                  h.label, "link", h.begin, h.end, h.bytes);
+  result.links = links.traffic();
+  result.link_messages = links.log();
 
   result.events = kernel.events_run();
   result.frame = host.frame_end();
@@ -99,6 +120,10 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     c.finish = r.finish;
     c.idle = r.finish - r.busy - r.comm;
     c.work = r.work;
+    c.trace_corners = r.trace_corners;
+    c.exchange = r.exchange;
+    c.subdivide = r.subdivide;
+    c.corners_received = r.corners_received.size();
     result.breakdown += r.work;
     result.cells.push_back(c);
     video.push_back(&cell->video_memory());
@@ -109,6 +134,12 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
   for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
     result.pixel_cycles[s] = static_cast<float>(cells[c]->pixel_cycles()[k]);
   });
+  if (exchange) {
+    result.pixel_samples.assign(result.pixel_cycles.size(), 0.0f);
+    for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
+      result.pixel_samples[s] = static_cast<float>(cells[c]->pixel_samples()[k]);
+    });
+  }
   return result;
 }
 
@@ -120,8 +151,8 @@ SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& confi
   const WindowLayout layout(config.mode, config.cells, cam.width, cam.height);
   std::vector<TracedCell> traced;
   {
-    Progress progress("tracing", static_cast<std::uint64_t>(cam.width) * cam.height, show_progress);
-    traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress);
+    Progress progress("tracing", render_work(cam.width, cam.height, config.aa), show_progress);
+    traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress, config.aa);
   }
   // The event loop is serial; composing the screen uses the same host threads.
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);

@@ -5,6 +5,7 @@
 
 #include "cell_grid.h"
 #include "cost_profile.h"
+#include "neighbour_links.h"
 #include "scene_footprint.h"
 #include "timeline.h"
 #include "traced_cells.h"
@@ -23,6 +24,7 @@ struct MachineConfig {
   CellGrid cells{8, 8};
   PixelMode mode = PixelMode::Dot;
   CostProfile profile;
+  AntialiasOptions aa;  // depth 0: one sample per pixel, no exchange
 };
 
 struct CellReport {
@@ -32,6 +34,10 @@ struct CellReport {
   std::uint64_t rays = 0;
   Cycles busy, idle, comm, finish;  // idle = finish - busy - comm
   CostBreakdown work;
+  // Antialiasing: each phase from its start to its end (the exchange includes
+  // its waits), and the corners it took in over the links.
+  Cycles trace_corners, exchange, subdivide;
+  std::uint64_t corners_received = 0;
 };
 
 struct SimulationResult {
@@ -42,6 +48,9 @@ struct SimulationResult {
   Cycles frame;              // the last completion reached the host: the frame time
   Framebuffer screen;        // what the video bus shows
   std::vector<float> pixel_cycles;  // cycles spent on each screen pixel, row-major
+  std::vector<float> pixel_samples;  // antialiasing: primary samples per screen pixel
+  std::vector<LinkTraffic> links;    // every link that carried a message
+  std::vector<LinkMessage> link_messages;  // in order of arrival
   Timeline timeline;
   std::uint64_t events = 0;  // events the kernel ran
 };

@@ -6,7 +6,9 @@
 // Messages to cells that are not adjacent go store-and-forward, hop by hop: X
 // first (east or west along the row), then Y (north or south along the column);
 // each intermediate cell receives the whole message before sending it on, in its
-// link hardware, without the cell's program.
+// link hardware, without the cell's program. On a torus (the profile's
+// link.topology) the edge cells are linked to the opposite edge too, and each
+// axis goes the shorter way round (east or south where both are as short).
 
 #include "cell_grid.h"
 #include "cost_profile.h"
@@ -27,6 +29,26 @@ struct LinkMessage {
   Cycles sent;     // the sender handed it to its first link
   Cycles arrived;  // it is in the destination's memory
   int hops = 0;
+  std::uint64_t payload = 0;  // the sender's tag for what it carries
+};
+
+// One direction of one link, from `cell` toward `direction`.
+struct LinkTraffic {
+  CellId cell = 0;
+  Direction direction = Direction::North;
+  std::uint64_t messages = 0;
+  std::uint64_t bytes = 0;
+  Cycles busy;      // cycles bits were on it
+  Cycles max_wait;  // longest a message waited for it to be free
+};
+
+// One message on one link: when its first and last bits were sent.
+struct LinkHop {
+  CellId cell = 0;
+  Direction direction = Direction::North;
+  std::string label;
+  Cycles begin, end;
+  std::uint64_t bytes = 0;
 };
 
 class NeighbourLinks {
@@ -50,12 +72,19 @@ class NeighbourLinks {
     void await_suspend(ProcessHandle h) { links.start(std::move(message), h); }
     void await_resume() const noexcept {}
   };
-  SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, std::string label);
+  SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, std::string label,
+                   std::uint64_t payload = 0);
 
+  // Delivered messages, in order of arrival.
   const std::vector<LinkMessage>& log() const { return log_; }
+  // Every hop of every message, in the order they were put on their links.
+  const std::vector<LinkHop>& hops() const { return hops_; }
+  // The links that carried anything, in order of (cell, direction).
+  std::vector<LinkTraffic> traffic() const;
 
  private:
   CellId next_hop(CellId at, CellId to) const;
+  Direction direction_of(CellId at, CellId next) const;
   void start(LinkMessage m, ProcessHandle sender);
   // Queues the message on the link from `at` toward its next hop; returns the
   // cycle its last bit leaves `at`.
@@ -66,7 +95,9 @@ class NeighbourLinks {
   const CostProfile& profile_;
   std::function<void(const LinkMessage&)> handler_;
   std::vector<Cycles> link_free_at_;  // per (cell, direction): cell * 4 + direction
+  std::vector<LinkTraffic> traffic_;  // the same index
   std::vector<LinkMessage> log_;
+  std::vector<LinkHop> hops_;
 };
 
 }  // namespace capsim::sim

@@ -2,6 +2,8 @@
 
 #include "capsim/progress.h"
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -9,8 +11,104 @@
 
 namespace capsim::sim {
 
+namespace {
+
+// Per-cell sums kept per host thread and added at the end: integer sums, so the
+// totals do not depend on how rows were spread over threads.
+struct Sums {
+  std::vector<CostBreakdown> work;
+  std::vector<std::uint64_t> rays;
+  explicit Sums(int cells) : work(cells), rays(cells, 0) {}
+};
+
+// Antialiased: every corner sample traced and charged to the cell that owns it
+// (phase 1), then every pixel resolved from its corners and charged to its
+// cell (phase 3).
+std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const WindowLayout& layout,
+                                                const CellCosts& costs, int threads,
+                                                Progress* progress, const AntialiasOptions& aa) {
+  const int cell_count = layout.grid().cell_count();
+  const int width = layout.width(), height = layout.height();
+  std::vector<TracedCell> cells(cell_count);
+  for (CellId c = 0; c < cell_count; ++c) {
+    const int n = layout.window(c).pixel_count();
+    cells[c].samples = Framebuffer(n, 1);
+    cells[c].pixel_cycles.resize(n);
+    cells[c].pixel_samples.resize(n);
+  }
+  auto owner = [&](int x, int y) { return layout.owner({std::min(x, width - 1), std::min(y, height - 1)}); };
+
+  // Phase 1: each corner's cycles, kept per corner until they are folded into
+  // the pixel that owns it (a bottom-row pixel owns corners of two rows, which
+  // different threads may trace at once).
+  std::vector<std::uint64_t> corner_cycles(static_cast<std::size_t>(width + 1) * (height + 1));
+  tbb::enumerable_thread_specific<Sums> corner_sums([&] { return Sums(cell_count); });
+  const CornerSamples corners = trace_corners(
+      tracer, threads,
+      [&](int x, int y, const OpCounts& ops) {
+        const CostBreakdown cost = pixel_cost(ops, costs);
+        corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = cost.total().count();
+        Sums& sum = corner_sums.local();
+        const CellId c = owner(x, y).cell;
+        sum.work[c] += cost;
+        sum.rays[c] += ops.rays;
+      },
+      progress);
+
+  // Phase 3.
+  tbb::enumerable_thread_specific<Sums> pixel_sums([&] { return Sums(cell_count); });
+  tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+      Tracer::Scratch& s = scratch.local();
+      Sums& sum = pixel_sums.local();
+      for (int y = rows.begin(); y != rows.end(); ++y)
+        for (int x = 0; x < width; ++x) {
+          const PixelOwner own = layout.owner({x, y});
+          const ScreenSample c[4] = {corners.at(x, y), corners.at(x + 1, y), corners.at(x, y + 1),
+                                     corners.at(x + 1, y + 1)};
+          OpCounts ops;
+          const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, ops);
+          const CostBreakdown cost = pixel_cost(ops, costs);
+          std::uint64_t owned = corner_cycles[corners.index(x, y)];
+          if (x == width - 1) owned += corner_cycles[corners.index(x + 1, y)];
+          if (y == height - 1) owned += corner_cycles[corners.index(x, y + 1)];
+          if (x == width - 1 && y == height - 1) owned += corner_cycles[corners.index(x + 1, y + 1)];
+          TracedCell& out = cells[own.cell];
+          out.samples.set(own.video_index, 0, px.value);
+          out.pixel_cycles[own.video_index] = owned + cost.total().count();
+          out.pixel_samples[own.video_index] =
+              static_cast<std::uint32_t>(owned_corner_count(x, y, width, height) + px.subdivision_samples);
+          sum.work[own.cell] += cost;
+          sum.rays[own.cell] += ops.rays;
+        }
+      if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * width);
+    });
+  });
+  for (const Sums& sum : corner_sums)
+    for (CellId c = 0; c < cell_count; ++c) {
+      cells[c].corner_work += sum.work[c];
+      cells[c].rays += sum.rays[c];
+    }
+  for (const Sums& sum : pixel_sums)
+    for (CellId c = 0; c < cell_count; ++c) {
+      cells[c].subdivision_work += sum.work[c];
+      cells[c].rays += sum.rays[c];
+    }
+  for (TracedCell& c : cells) {
+    c.work = c.corner_work;
+    c.work += c.subdivision_work;
+  }
+  return cells;
+}
+
+}  // namespace
+
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
-                                    const CellCosts& costs, int threads, Progress* progress) {
+                                    const CellCosts& costs, int threads, Progress* progress,
+                                    const AntialiasOptions& aa) {
+  if (aa.depth > 0) return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa);
   const int cell_count = layout.grid().cell_count();
   std::vector<TracedCell> cells(cell_count);
   for (CellId c = 0; c < cell_count; ++c) {
@@ -21,15 +119,7 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
   // Pixels are traced in screen order, row by row as `capsim render` traces
   // them (neighbouring rays share voxels and primitives in the caches), and each
   // sample goes to the video-memory slot of the cell whose window shows it.
-  // Per-cell sums are kept per host thread and added at the end: integer sums,
-  // so the totals do not depend on how rows were spread over threads.
-  struct Sums {
-    std::vector<CostBreakdown> work;
-    std::vector<std::uint64_t> rays;
-  };
-  tbb::enumerable_thread_specific<Sums> sums([&] {
-    return Sums{std::vector<CostBreakdown>(cell_count), std::vector<std::uint64_t>(cell_count, 0)};
-  });
+  tbb::enumerable_thread_specific<Sums> sums([&] { return Sums(cell_count); });
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch(
       [&] { return Tracer::Scratch(tracer.scene()); });
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);

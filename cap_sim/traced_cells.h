@@ -19,16 +19,23 @@ namespace capsim::sim {
 
 // One cell's pixels, traced: pixel k of its window at samples (k, 0), costing
 // pixel_cycles[k] on a cell; work and rays are the sums over all its pixels.
+// Antialiased, a pixel's cycles are those of the corners it owns (phase 1) and
+// of its subdivision (phase 3), and work = corner_work + subdivision_work.
 struct TracedCell {
   Framebuffer samples;  // as Framebuffer::set stores them
   std::vector<std::uint64_t> pixel_cycles;
   CostBreakdown work;  // pixel_cost() summed over the cell's pixels
   std::uint64_t rays = 0;
+  // Antialiasing only.
+  CostBreakdown corner_work;               // phase 1: tracing the corners it owns
+  CostBreakdown subdivision_work;          // phase 3: its pixels' subdivision
+  std::vector<std::uint32_t> pixel_samples;  // primary samples traced per pixel
 };
 
 // One entry per cell of the layout. threads: 0 = all hardware threads.
-// progress may be null.
+// progress may be null; it advances by render_work(width, height, aa).
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
-                                    const CellCosts& costs, int threads, Progress* progress);
+                                    const CellCosts& costs, int threads, Progress* progress,
+                                    const AntialiasOptions& aa = {});
 
 }  // namespace capsim::sim

@@ -41,6 +41,17 @@ void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
   cmd.add_flag("--primary-only", o.primary_only,
                "Trace only primary rays with local shading (no shadow, reflection or "
                "refraction rays), as in the paper's Table 4-2");
+  cmd.add_option("--aa", o.aa_depth,
+                 fmt::format("Adaptive antialiasing from pixel-corner samples, 0 to {} levels of "
+                             "subdivision (0 = one sample at each pixel centre; docs/antialiasing.md)",
+                             kMaxAntialiasDepth))
+      ->default_val(0)
+      ->check(CLI::Range(0, kMaxAntialiasDepth));
+  cmd.add_option("--aa-threshold", o.aa_threshold,
+                 "Split a square whose corners differ by this much or more: |dR|+|dG|+|dB| of "
+                 "the 8-bit sRGB colours / 255, 0 to 3")
+      ->default_val(0.3)
+      ->check(CLI::Range(0.0, 3.0));
 }
 
 PreparedScene load_scene(const TracerOptions& o) {
@@ -67,6 +78,10 @@ PreparedScene load_scene(const TracerOptions& o) {
                                               kMaxGridDivisions));
   }
   return prepare_scene(parse_scene_file(o.scene), p);
+}
+
+capsim::AntialiasOptions antialias_options(const TracerOptions& o) {
+  return {o.aa_depth, o.aa_threshold};
 }
 
 capsim::TraceOptions trace_options(const TracerOptions& o) {

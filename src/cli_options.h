@@ -2,6 +2,7 @@
 // Options shared by `capsim render` and `capsim simulate`: the scene, the output
 // image, the image size, the grid, host threads and primary-only tracing.
 
+#include "capsim/antialias.h"
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"
 
@@ -18,6 +19,8 @@ struct TracerOptions {
   std::string grid = "auto";  // divisions per axis, or "auto"
   int threads = 0;          // 0 = all hardware threads
   bool primary_only = false;
+  int aa_depth = 0;          // antialiasing levels; 0 = one sample at each pixel centre
+  double aa_threshold = 0.3;  // colour difference that splits a square
 };
 
 // Registers the shared options on a subcommand, each with its help text.
@@ -29,5 +32,6 @@ void add_tracer_options(CLI::App& cmd, TracerOptions& o);
 PreparedScene load_scene(const TracerOptions& o);
 
 capsim::TraceOptions trace_options(const TracerOptions& o);
+capsim::AntialiasOptions antialias_options(const TracerOptions& o);
 
 }  // namespace capsim::cli

@@ -17,7 +17,8 @@ Command add_render_command(CLI::App& app) {
   return [opts] {
     const PreparedScene scene = load_scene(*opts);
     const Tracer tracer(scene, trace_options(*opts));
-    Progress progress("rendering", static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height,
+    const AntialiasOptions aa = antialias_options(*opts);
+    Progress progress("rendering", render_work(scene.camera.width, scene.camera.height, aa),
                       Progress::stderr_is_terminal());
     if (is_png_path(opts->output)) {
       // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
@@ -28,10 +29,24 @@ Command add_render_command(CLI::App& app) {
           [&](int j, std::span<const PixelSample> row) {
             encode_srgb8_row(row, rgb.data() + static_cast<std::size_t>(j) * width * 3);
           },
-          nullptr, &progress);
+          nullptr, &progress, aa);
       write_png_rgb8(opts->output, width, scene.camera.height, rgb);
-    } else {
+    } else if (aa.depth == 0) {
       write_image(opts->output, render(tracer, opts->threads, nullptr, &progress));
+    } else {
+      // Antialiased EXR: also the samples traced for each pixel.
+      Framebuffer fb(scene.camera.width, scene.camera.height);
+      ExtraChannel samples{"samples", std::vector<float>(static_cast<std::size_t>(fb.width) * fb.height)};
+      render_rows(
+          tracer, opts->threads,
+          [&](int j, std::span<const PixelSample> row) {
+            for (int i = 0; i < fb.width; ++i) {
+              fb.set(i, j, row[i]);
+              samples.values[static_cast<std::size_t>(j) * fb.width + i] = static_cast<float>(row[i].samples);
+            }
+          },
+          nullptr, &progress, aa);
+      write_image(opts->output, fb, {samples});
     }
     return 0;
   };

@@ -16,6 +16,7 @@ OpCounts& OpCounts::operator+=(const OpCounts& o) {
   primary_rays += o.primary_rays;
   shadow_rays += o.shadow_rays;
   secondary_rays += o.secondary_rays;
+  aa_squares += o.aa_squares;
   return *this;
 }
 

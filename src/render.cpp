@@ -24,37 +24,93 @@ void Framebuffer::set(int i, int j, const PixelSample& s) {
   id[k] = static_cast<float>(s.primitive);
 }
 
+namespace {
+
+// Runs body(rows) over the rows [0, count) on `threads` host threads.
+template <class Body>
+void parallel_rows(int threads, int count, Body body) {
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
+  });
+}
+
+struct Worker {
+  Tracer::Scratch scratch;
+  std::vector<PixelSample> row;
+};
+
+}  // namespace
+
+std::uint64_t render_work(int width, int height, const AntialiasOptions& aa) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
+  return aa.depth > 0 ? pixels + static_cast<std::uint64_t>(width + 1) * (height + 1) : pixels;
+}
+
+CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostSink& cost,
+                            Progress* progress) {
+  const Camera& cam = tracer.scene().camera;
+  CornerSamples corners;
+  corners.width = cam.width;
+  corners.height = cam.height;
+  corners.samples.resize(static_cast<std::size_t>(cam.width + 1) * (cam.height + 1));
+  tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
+  parallel_rows(threads, cam.height + 1, [&](const tbb::blocked_range<int>& rows) {
+    Tracer::Scratch& s = scratch.local();
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x <= cam.width; ++x) {
+        OpCounts ops;
+        corners.samples[corners.index(x, y)] = trace_screen_sample(tracer, x, y, s, ops);
+        cost(x, y, ops);
+      }
+    if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * (cam.width + 1));
+  });
+  return corners;
+}
+
 void render_rows(const Tracer& tracer, int threads, const RowSink& store, RenderStats* stats,
-                 Progress* progress) {
+                 Progress* progress, const AntialiasOptions& aa) {
   const Camera& cam = tracer.scene().camera;
   // Per-row counts, summed in row order afterwards: the totals never depend on
   // how rows were spread over threads.
   std::vector<OpCounts> row_ops(cam.height);
-  struct Worker {
-    Tracer::Scratch scratch;
-    std::vector<PixelSample> row;
-  };
+  CornerSamples corners;
+  std::vector<OpCounts> corner_row_ops;
+  if (aa.depth > 0) {
+    corner_row_ops.resize(cam.height + 1);
+    corners = trace_corners(
+        tracer, threads, [&](int, int y, const OpCounts& ops) { corner_row_ops[y] += ops; }, progress);
+  }
   tbb::enumerable_thread_specific<Worker> workers(
       [&] { return Worker{Tracer::Scratch(tracer.scene()), std::vector<PixelSample>(cam.width)}; });
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, cam.height), [&](const tbb::blocked_range<int>& rows) {
-      Worker& w = workers.local();
-      for (int j = rows.begin(); j != rows.end(); ++j) {
-        OpCounts& ops = row_ops[j];
+  parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
+    Worker& w = workers.local();
+    for (int j = rows.begin(); j != rows.end(); ++j) {
+      OpCounts& ops = row_ops[j];
+      if (aa.depth == 0) {
         for (int i = 0; i < cam.width; ++i) w.row[i] = tracer.trace_pixel(i, j, w.scratch, ops);
-        store(j, w.row);
+      } else {
+        for (int i = 0; i < cam.width; ++i) {
+          const ScreenSample c[4] = {corners.at(i, j), corners.at(i + 1, j), corners.at(i, j + 1),
+                                     corners.at(i + 1, j + 1)};
+          const AntialiasedPixel p = resolve_pixel(tracer, i, j, c, aa, w.scratch, ops);
+          w.row[i] = p.value;
+          w.row[i].samples = owned_corner_count(i, j, cam.width, cam.height) + p.subdivision_samples;
+        }
       }
-      if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * cam.width);
-    });
+      store(j, w.row);
+    }
+    if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * cam.width);
   });
   if (stats) {
     stats->ops = {};
+    for (const OpCounts& o : corner_row_ops) stats->ops += o;
     for (const OpCounts& o : row_ops) stats->ops += o;
   }
 }
 
-Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progress* progress) {
+Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progress* progress,
+                   const AntialiasOptions& aa) {
   const Camera& cam = tracer.scene().camera;
   Framebuffer fb(cam.width, cam.height);
   render_rows(
@@ -62,7 +118,7 @@ Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progre
       [&](int j, std::span<const PixelSample> row) {
         for (int i = 0; i < cam.width; ++i) fb.set(i, j, row[i]);
       },
-      stats, progress);
+      stats, progress, aa);
   return fb;
 }
 

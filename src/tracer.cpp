@@ -70,10 +70,10 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   epsilon_ = scene_epsilon(scene);
 }
 
-Ray Tracer::primary_ray(int i, int j) const {
+Ray Tracer::screen_ray(double u, double v) const {
   const Camera& c = scene_.camera;
-  const double px = (2.0 * (i + 0.5) / c.width - 1.0) * half_width_;
-  const double py = (1.0 - 2.0 * (j + 0.5) / c.height) * half_height_;
+  const double px = (2.0 * u / c.width - 1.0) * half_width_;
+  const double py = (1.0 - 2.0 * v / c.height) * half_height_;
   Ray r;
   r.origin = cam_origin_;
   r.dir = glm::normalize(cam_forward_ + px * cam_right_ + py * cam_up_);
@@ -197,12 +197,12 @@ glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& 
   return color;
 }
 
-PixelSample Tracer::trace_pixel(int i, int j, Scratch& scratch, OpCounts& ops) const {
+PixelSample Tracer::trace_screen_point(double u, double v, Scratch& scratch, OpCounts& ops) const {
   PixelSample s;
   Hit h;
   h.t = kInfinity;
   ++ops.primary_rays;
-  s.color = shade(primary_ray(i, j), 0, scratch, ops, &h);
+  s.color = shade(screen_ray(u, v), 0, scratch, ops, &h);
   if (h.t < kInfinity) {
     s.alpha = 1;
     s.depth = h.t;

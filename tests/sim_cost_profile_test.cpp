@@ -53,10 +53,11 @@ std::string minimal_profile_text() {
     "name": "t", "description": "d", "clock_hz": 1000000,
     "cell_costs_us": {"sphere_test": 1, "cone_test": 2, "box_test": 3, "dda_setup": 4,
                       "dda_step": 5, "matvec": 6, "tree_visit": 7, "hit_sort": 8,
-                      "shading_eval": 9, "ray_other": 10, "pixel_write": 11},
+                      "shading_eval": 9, "ray_other": 10, "pixel_write": 11,
+                      "aa_square": 12},
     "host_costs_us": {"primitive": 1, "matmat": 2, "matvec": 3, "voxel_column": 4, "voxel_entry": 5},
     "bus": {"bytes_per_second": 1000, "arbitration_us": 1.4, "latency_us": 1.6},
-    "link": {"bits_per_second": 8000, "latency_us": 0},
+    "link": {"bits_per_second": 8000, "latency_us": 0, "topology": "mesh"},
     "cell_memory_bytes": 4096, "program_bytes": 1024})").dump();
 }
 
@@ -92,6 +93,9 @@ TEST(CostProfile, RefusesUnknownMissingAndBadValues) {
   nlohmann::json zero_clock = j;
   zero_clock["clock_hz"] = 0;
   expect_refused(zero_clock.dump(), "clock_hz");
+  nlohmann::json topology = j;
+  topology["link"]["topology"] = "ring";
+  expect_refused(topology.dump(), "link.topology");
   expect_refused("{ not json", "not valid JSON");
 }
 
@@ -117,13 +121,14 @@ TEST(CostProfile, PixelCostIsEachCountTimesItsCost) {
   ops.shading_evals = 2;
   ops.matvec = 1;
   ops.rays = 2;
+  ops.aa_squares = 3;
   const CostBreakdown b = pixel_cost(ops, p.cell);
   EXPECT_EQ(b[CostCategory::Intersection], Cycles(3 * 1 + 2 * 2 + 1 * 3));
   EXPECT_EQ(b[CostCategory::Dda], Cycles(1 * 4 + 7 * 5));
   EXPECT_EQ(b[CostCategory::Csg], Cycles(4 * 7 + 5 * 8));
-  EXPECT_EQ(b[CostCategory::Other], Cycles(1 * 6 + 2 * 9 + 2 * 10 + 11));
+  EXPECT_EQ(b[CostCategory::Other], Cycles(1 * 6 + 2 * 9 + 2 * 10 + 3 * 12 + 11));
   EXPECT_EQ(b[CostCategory::VoxelGeneration], Cycles(0));
-  EXPECT_EQ(b.total(), Cycles(10 + 39 + 68 + 55));
+  EXPECT_EQ(b.total(), Cycles(10 + 39 + 68 + 91));
 }
 
 TEST(CostProfile, VoxelGenerationCostIsEachCountTimesItsHostCost) {

@@ -23,6 +23,8 @@ struct OpCounts {
   std::uint64_t primary_rays = 0;
   std::uint64_t shadow_rays = 0;
   std::uint64_t secondary_rays = 0;  // reflection and refraction
+  std::uint64_t aa_squares = 0;      // antialiasing: squares whose corners were compared
+                                     // with the threshold and averaged
 
   std::uint64_t intersection_tests() const { return sphere_tests + cone_tests + box_tests; }
   OpCounts& operator+=(const OpCounts& o);

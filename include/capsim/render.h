@@ -2,6 +2,7 @@
 // Renders every pixel of a prepared scene with the tracer (host threads via TBB;
 // the result does not depend on the thread count).
 
+#include "capsim/antialias.h"
 #include "capsim/progress.h"
 #include "capsim/tracer.h"
 
@@ -34,12 +35,27 @@ using RowSink = std::function<void(int j, std::span<const PixelSample> row)>;
 // that need only part of a sample (an 8-bit image, say) keep only that part,
 // rather than a whole Framebuffer. threads: 0 = all hardware threads. stats, if
 // given, receives the summed counts (equal for any thread count); progress, if
-// given, advances by each finished row's pixels.
+// given, advances by render_work(...) in all. With aa.depth >= 1 every pixel is
+// antialiased from the screen's corner samples (capsim/antialias.h).
 void render_rows(const Tracer& tracer, int threads, const RowSink& store,
-                 RenderStats* stats = nullptr, Progress* progress = nullptr);
+                 RenderStats* stats = nullptr, Progress* progress = nullptr,
+                 const AntialiasOptions& aa = {});
 
 // render_rows into a Framebuffer.
 Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats = nullptr,
-                   Progress* progress = nullptr);
+                   Progress* progress = nullptr, const AntialiasOptions& aa = {});
+
+// The units a render's progress counts: its pixels, and its corner samples when
+// antialiasing.
+std::uint64_t render_work(int width, int height, const AntialiasOptions& aa);
+
+// Receives the operations each corner sample cost; called from several host
+// threads at once, for different corner rows.
+using CornerCostSink = std::function<void(int x, int y, const OpCounts& ops)>;
+
+// Every corner sample of the screen, traced on host threads (the result does
+// not depend on their number); progress, if given, advances by each corner.
+CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostSink& cost,
+                            Progress* progress);
 
 }  // namespace capsim

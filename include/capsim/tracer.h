@@ -34,6 +34,7 @@ struct PixelSample {
   float alpha = 0;
   double depth = kInfinity;
   int primitive = -1;
+  int samples = 1;  // primary samples traced for this pixel (antialiasing traces more)
 };
 
 class Tracer {
@@ -63,9 +64,15 @@ class Tracer {
   // The primary ray through the centre of pixel (i, j), shaded; adds the
   // operations spent on it to ops (the caller sums them per row or per pixel, as
   // it needs, without a fresh set of counts per call).
-  PixelSample trace_pixel(int i, int j, Scratch& scratch, OpCounts& ops) const;
+  PixelSample trace_pixel(int i, int j, Scratch& scratch, OpCounts& ops) const {
+    return trace_screen_point(i + 0.5, j + 0.5, scratch, ops);
+  }
+  // The primary ray through screen point (u, v) in pixel units ((0, 0) is the
+  // screen's top-left corner, (W, H) its bottom-right), shaded, as trace_pixel.
+  PixelSample trace_screen_point(double u, double v, Scratch& scratch, OpCounts& ops) const;
 
-  Ray primary_ray(int i, int j) const;
+  Ray primary_ray(int i, int j) const { return screen_ray(i + 0.5, j + 0.5); }
+  Ray screen_ray(double u, double v) const;
   const PreparedScene& scene() const { return scene_; }
   const TraceOptions& options() const { return options_; }
 
