@@ -123,7 +123,7 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     c.trace_corners = r.trace_corners;
     c.exchange = r.exchange;
     c.subdivide = r.subdivide;
-    c.corners_received = r.corners_received.size();
+    c.corners_received = r.corners_received;
     result.breakdown += r.work;
     result.cells.push_back(c);
     video.push_back(&cell->video_memory());

@@ -4,6 +4,7 @@
 // by host threads (trace_cells); the event loop alone decides simulated time.
 
 #include "cell_grid.h"
+#include "corner_exchange.h"
 #include "cost_profile.h"
 #include "neighbour_links.h"
 #include "scene_footprint.h"
@@ -37,7 +38,7 @@ struct CellReport {
   // Antialiasing: each phase from its start to its end (the exchange includes
   // its waits), and the corners it took in over the links.
   Cycles trace_corners, exchange, subdivide;
-  std::uint64_t corners_received = 0;
+  std::vector<CornerIndex> corners_received;  // ascending
 };
 
 struct SimulationResult {

@@ -28,6 +28,45 @@ constexpr CostCategory kCategories[] = {CostCategory::Intersection, CostCategory
 
 }  // namespace
 
+LinkTotals link_totals(const SimulationResult& r) {
+  LinkTotals t;
+  t.messages = r.link_messages.size();
+  for (const LinkMessage& m : r.link_messages) {
+    t.bytes += m.bytes;
+    t.hops += static_cast<std::uint64_t>(m.hops);
+    t.max_hops = std::max(t.max_hops, m.hops);
+  }
+  for (const LinkTraffic& l : r.links) {
+    t.busiest = std::max(t.busiest, l.busy);
+    t.longest_wait = std::max(t.longest_wait, l.max_wait);
+  }
+  return t;
+}
+
+namespace {
+
+std::string format_antialiasing(const SimulationResult& r) {
+  const std::uint64_t hz = r.config.profile.clock_hz;
+  std::string out = fmt::format(
+      "\nantialiasing: depth {}, threshold {}, links: {}\n"
+      "{:>4} {:>4} {:>16} {:>14} {:>14} {:>9}\n",
+      r.config.aa.depth, r.config.aa.threshold, to_string(r.config.profile.link.topology), "row",
+      "col", "trace corners", "exchange", "subdivide", "corners in");
+  for (const CellReport& c : r.cells)
+    out += fmt::format("{:>4} {:>4} {:>16} {:>14} {:>14} {:>9}\n", c.position.row, c.position.col,
+                       c.trace_corners.count(), c.exchange.count(), c.subdivide.count(),
+                       c.corners_received.size());
+  const LinkTotals t = link_totals(r);
+  out += fmt::format(
+      "link traffic: {} messages, {} bytes, {} hops (at most {} for one message) over {} links\n"
+      "busiest link {} cycles ({:.3f} s); longest wait for a link {} cycles\n",
+      t.messages, t.bytes, t.hops, t.max_hops, r.links.size(), t.busiest.count(),
+      t.busiest.seconds(hz), t.longest_wait.count());
+  return out;
+}
+
+}  // namespace
+
 std::string format_report(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   std::string out = fmt::format(
@@ -60,8 +99,48 @@ std::string format_report(const SimulationResult& r) {
                        total > 0 ? 100.0 * sec / total : 0.0);
   }
   out += fmt::format("  {:<22} {:>14.3f} s\n", "total", total);
+  if (r.config.aa.depth > 0) out += format_antialiasing(r);
   return out;
 }
+
+namespace {
+
+void add_antialiasing(nlohmann::json& report, const SimulationResult& r) {
+  using nlohmann::json;
+  report["antialiasing"] = {{"depth", r.config.aa.depth},
+                            {"threshold", r.config.aa.threshold},
+                            {"link_topology", to_string(r.config.profile.link.topology)},
+                            {"sample_bytes", kScreenSampleBytes}};
+  for (std::size_t i = 0; i < r.cells.size(); ++i) {
+    const CellReport& c = r.cells[i];
+    json& cell = report["cells"][i];
+    cell["trace_corners_cycles"] = c.trace_corners.count();
+    cell["exchange_cycles"] = c.exchange.count();
+    cell["subdivide_cycles"] = c.subdivide.count();
+    cell["corners_received"] = c.corners_received.size();
+  }
+  json links = json::array();
+  for (const LinkTraffic& l : r.links) {
+    const CellPosition p = r.config.cells.position(l.cell);
+    links.push_back({{"row", p.row},
+                     {"col", p.col},
+                     {"direction", to_string(l.direction)},
+                     {"messages", l.messages},
+                     {"bytes", l.bytes},
+                     {"busy_cycles", l.busy.count()},
+                     {"max_wait_cycles", l.max_wait.count()}});
+  }
+  const LinkTotals t = link_totals(r);
+  report["links"] = links;
+  report["link_totals"] = {{"messages", t.messages},
+                           {"bytes", t.bytes},
+                           {"hops", t.hops},
+                           {"max_hops", t.max_hops},
+                           {"busiest_link_cycles", t.busiest.count()},
+                           {"longest_wait_cycles", t.longest_wait.count()}};
+}
+
+}  // namespace
 
 nlohmann::json report_json(const SimulationResult& r) {
   using nlohmann::json;
@@ -83,7 +162,7 @@ nlohmann::json report_json(const SimulationResult& r) {
     breakdown_cycles[json_key(c)] = r.breakdown[c].count();
   }
   const LoadSpread s = load_spread(r);
-  return {{"mode", to_string(r.config.mode)},
+  json report = {{"mode", to_string(r.config.mode)},
           {"cells_grid", to_string(r.config.cells)},
           {"profile", r.config.profile.name},
           {"clock_hz", hz},
@@ -99,6 +178,8 @@ nlohmann::json report_json(const SimulationResult& r) {
           {"breakdown", breakdown},
           {"breakdown_cycles", breakdown_cycles},
           {"total_cycles", r.frame.count()}};
+  if (r.config.aa.depth > 0) add_antialiasing(report, r);
+  return report;
 }
 
 }  // namespace capsim::sim

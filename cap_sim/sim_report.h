@@ -18,6 +18,16 @@ struct LoadSpread {
 };
 LoadSpread load_spread(const SimulationResult& r);
 
+// The neighbour links' traffic over a frame (antialiasing's corner exchange).
+struct LinkTotals {
+  std::uint64_t messages = 0, bytes = 0;
+  std::uint64_t hops = 0;  // link crossings, summed over the messages
+  int max_hops = 0;
+  Cycles busiest;       // the most cycles one link direction carried bits
+  Cycles longest_wait;  // the longest a message waited for a link
+};
+LinkTotals link_totals(const SimulationResult& r);
+
 std::string format_report(const SimulationResult& r);
 nlohmann::json report_json(const SimulationResult& r);
 
