@@ -116,6 +116,7 @@ Process Cell::run_frame() {
                         subdivide_start, wire_.kernel.now());
   }
   video_memory_ = std::move(traced_.samples);
+  video_srgb8_ = std::move(traced_.srgb8);
   record_.work = traced_.work;
   record_.rays = traced_.rays;
   record_.pixels = static_cast<std::uint64_t>(window_.pixel_count());

@@ -50,6 +50,7 @@ class Cell {
   Mailbox<BusTransfer>& bus_inbox() { return bus_inbox_; }
   Mailbox<LinkMessage>& link_inbox() { return link_inbox_; }
   const Framebuffer& video_memory() const { return video_memory_; }
+  const std::vector<unsigned char>& video_memory_srgb8() const { return video_srgb8_; }
   const CellWindow& window() const { return window_; }
   const CellRecord& record() const { return record_; }
   // The cycles each of its pixels cost, in video-memory order.
@@ -77,6 +78,7 @@ class Cell {
   Mailbox<LinkMessage> link_inbox_;
   std::vector<LinkMessage> early_;  // horizontal messages that came before the vertical ones
   Framebuffer video_memory_;  // pixel k of the window at (k, 0); filled by the frame
+  std::vector<unsigned char> video_srgb8_;  // or, for an 8-bit screen, at bytes 3k..3k+2
   CellRecord record_;
 };
 

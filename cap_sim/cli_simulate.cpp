@@ -68,6 +68,7 @@ Command add_simulate_command(CLI::App& app) {
     config.mode = *sim::parse_pixel_mode(sim->mode);
     config.profile = sim::load_cost_profile(sim->profile);
     config.aa = antialias_options(*opts);
+    config.screen = is_png_path(opts->output) ? sim::ScreenFormat::Srgb8 : sim::ScreenFormat::Float;
     if (!sim->heatmap.empty() && !is_png_path(sim->heatmap))
       throw std::invalid_argument(fmt::format("{}: the heat map is written as .png", sim->heatmap));
     for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap}) check_output_directory(*path);
@@ -77,12 +78,13 @@ Command add_simulate_command(CLI::App& app) {
     const sim::SimulationResult result =
         sim::simulate_frame(tracer, config, opts->threads, Progress::stderr_is_terminal());
 
-    std::vector<ExtraChannel> extra;
-    if (!is_png_path(opts->output)) {
-      extra.push_back({"cycles", result.pixel_cycles});
+    if (config.screen == sim::ScreenFormat::Srgb8) {
+      write_png_rgb8(opts->output, result.width, result.height, result.screen_srgb8);
+    } else {
+      std::vector<ExtraChannel> extra = {{"cycles", result.pixel_cycles}};
       if (config.aa.depth > 0) extra.push_back({"samples", result.pixel_samples});
+      write_image(opts->output, result.screen, extra);
     }
-    write_image(opts->output, result.screen, extra);
     if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
     if (!sim->trace.empty()) {
       const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", sim::to_string(config.cells),

@@ -107,7 +107,6 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
   result.events = kernel.events_run();
   result.frame = host.frame_end();
   result.breakdown = voxel_generation;
-  std::vector<const Framebuffer*> video;
   for (const auto& cell : cells) {
     const CellRecord& r = cell->record();
     CellReport c;
@@ -126,8 +125,17 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     c.corners_received = r.corners_received;
     result.breakdown += r.work;
     result.cells.push_back(c);
-    video.push_back(&cell->video_memory());
   }
+  result.width = layout.width();
+  result.height = layout.height();
+  if (config.screen == ScreenFormat::Srgb8) {
+    std::vector<const std::vector<unsigned char>*> video;
+    for (const auto& cell : cells) video.push_back(&cell->video_memory_srgb8());
+    result.screen_srgb8 = compose_screen_srgb8(layout, video);
+    return result;
+  }
+  std::vector<const Framebuffer*> video;
+  for (const auto& cell : cells) video.push_back(&cell->video_memory());
   result.screen = compose_screen(layout, video);
 
   result.pixel_cycles.assign(static_cast<std::size_t>(layout.width()) * layout.height(), 0.0f);
@@ -152,7 +160,7 @@ SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& confi
   std::vector<TracedCell> traced;
   {
     Progress progress("tracing", render_work(cam.width, cam.height, config.aa), show_progress);
-    traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress, config.aa);
+    traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress, config.aa, config.screen);
   }
   // The event loop is serial; composing the screen uses the same host threads.
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);

@@ -26,6 +26,7 @@ struct MachineConfig {
   PixelMode mode = PixelMode::Dot;
   CostProfile profile;
   AntialiasOptions aa;  // depth 0: one sample per pixel, no exchange
+  ScreenFormat screen = ScreenFormat::Float;
 };
 
 struct CellReport {
@@ -47,9 +48,14 @@ struct SimulationResult {
   std::vector<CellReport> cells;
   CostBreakdown breakdown;   // every cell's work plus the host's voxel generation
   Cycles frame;              // the last completion reached the host: the frame time
-  Framebuffer screen;        // what the video bus shows
-  std::vector<float> pixel_cycles;  // cycles spent on each screen pixel, row-major
-  std::vector<float> pixel_samples;  // antialiasing: primary samples per screen pixel
+  int width = 0, height = 0;  // the screen's
+  // What the video bus shows, in the config's screen format: floats (with the
+  // cycles spent on each pixel and, antialiased, its primary samples), or the
+  // 8-bit sRGB bytes a PNG holds; the other members stay empty.
+  Framebuffer screen;
+  std::vector<float> pixel_cycles;   // row-major
+  std::vector<float> pixel_samples;  // row-major
+  std::vector<unsigned char> screen_srgb8;
   std::vector<LinkTraffic> links;    // every link that carried a message
   std::vector<LinkMessage> link_messages;  // in order of arrival
   Timeline timeline;

@@ -72,7 +72,7 @@ std::string format_report(const SimulationResult& r) {
   std::string out = fmt::format(
       "CAP simulation: {} cells, {} mode, profile {} ({} Hz), {}x{} pixels\n",
       to_string(r.config.cells), to_string(r.config.mode), r.config.profile.name, hz,
-      r.screen.width, r.screen.height);
+      r.width, r.height);
   out += fmt::format("data broadcast: program {} B, scene {} B, voxel data {} B\n\n",
                      r.config.profile.program_bytes, r.footprint.scene_bytes(),
                      r.footprint.voxel_bytes());
@@ -166,8 +166,8 @@ nlohmann::json report_json(const SimulationResult& r) {
           {"cells_grid", to_string(r.config.cells)},
           {"profile", r.config.profile.name},
           {"clock_hz", hz},
-          {"width", r.screen.width},
-          {"height", r.screen.height},
+          {"width", r.width},
+          {"height", r.height},
           {"program_bytes", r.config.profile.program_bytes},
           {"scene_bytes", r.footprint.scene_bytes()},
           {"voxel_bytes", r.footprint.voxel_bytes()},

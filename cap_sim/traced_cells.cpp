@@ -1,5 +1,6 @@
 #include "traced_cells.h"
 
+#include "capsim/image_io.h"
 #include "capsim/progress.h"
 
 #include <algorithm>
@@ -21,21 +22,40 @@ struct Sums {
   explicit Sums(int cells) : work(cells), rays(cells, 0) {}
 };
 
+// Video memories of the right size and format for every cell.
+std::vector<TracedCell> empty_cells(const WindowLayout& layout, ScreenFormat format, bool antialiased) {
+  std::vector<TracedCell> cells(layout.grid().cell_count());
+  for (CellId c = 0; c < layout.grid().cell_count(); ++c) {
+    const int n = layout.window(c).pixel_count();
+    if (format == ScreenFormat::Srgb8) {
+      cells[c].srgb8.resize(static_cast<std::size_t>(n) * 3);
+      continue;
+    }
+    cells[c].samples = Framebuffer(n, 1);
+    cells[c].pixel_cycles.resize(n);
+    if (antialiased) cells[c].pixel_samples.resize(n);
+  }
+  return cells;
+}
+
+// Stores pixel k of a cell's video memory in its format.
+void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) {
+  if (format == ScreenFormat::Srgb8)
+    encode_srgb8_row({&px, 1}, cell.srgb8.data() + static_cast<std::size_t>(k) * 3);
+  else
+    cell.samples.set(k, 0, px);
+}
+
 // Antialiased: every corner sample traced and charged to the cell that owns it
 // (phase 1), then every pixel resolved from its corners and charged to its
 // cell (phase 3).
 std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const WindowLayout& layout,
                                                 const CellCosts& costs, int threads,
-                                                Progress* progress, const AntialiasOptions& aa) {
+                                                Progress* progress, const AntialiasOptions& aa,
+                                                ScreenFormat format) {
   const int cell_count = layout.grid().cell_count();
   const int width = layout.width(), height = layout.height();
-  std::vector<TracedCell> cells(cell_count);
-  for (CellId c = 0; c < cell_count; ++c) {
-    const int n = layout.window(c).pixel_count();
-    cells[c].samples = Framebuffer(n, 1);
-    cells[c].pixel_cycles.resize(n);
-    cells[c].pixel_samples.resize(n);
-  }
+  std::vector<TracedCell> cells = empty_cells(layout, format, true);
   auto owner = [&](int x, int y) { return layout.owner({std::min(x, width - 1), std::min(y, height - 1)}); };
 
   // Phase 1: each corner's cycles, kept per corner until they are folded into
@@ -76,10 +96,12 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
           if (y == height - 1) owned += corner_cycles[corners.index(x, y + 1)];
           if (x == width - 1 && y == height - 1) owned += corner_cycles[corners.index(x + 1, y + 1)];
           TracedCell& out = cells[own.cell];
-          out.samples.set(own.video_index, 0, px.value);
-          out.pixel_cycles[own.video_index] = owned + cost.total().count();
-          out.pixel_samples[own.video_index] =
-              static_cast<std::uint32_t>(owned_corner_count(x, y, width, height) + px.subdivision_samples);
+          store(out, own.video_index, px.value, format);
+          if (format == ScreenFormat::Float) {
+            out.pixel_cycles[own.video_index] = owned + cost.total().count();
+            out.pixel_samples[own.video_index] =
+                static_cast<std::uint32_t>(owned_corner_count(x, y, width, height) + px.subdivision_samples);
+          }
           sum.work[own.cell] += cost;
           sum.rays[own.cell] += ops.rays;
         }
@@ -107,15 +129,10 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
 
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CellCosts& costs, int threads, Progress* progress,
-                                    const AntialiasOptions& aa) {
-  if (aa.depth > 0) return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa);
+                                    const AntialiasOptions& aa, ScreenFormat format) {
+  if (aa.depth > 0) return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format);
   const int cell_count = layout.grid().cell_count();
-  std::vector<TracedCell> cells(cell_count);
-  for (CellId c = 0; c < cell_count; ++c) {
-    const int n = layout.window(c).pixel_count();
-    cells[c].samples = Framebuffer(n, 1);
-    cells[c].pixel_cycles.resize(n);
-  }
+  std::vector<TracedCell> cells = empty_cells(layout, format, false);
   // Pixels are traced in screen order, row by row as `capsim render` traces
   // them (neighbouring rays share voxels and primitives in the caches), and each
   // sample goes to the video-memory slot of the cell whose window shows it.
@@ -133,9 +150,9 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
           OpCounts ops;
           const PixelSample px = tracer.trace_pixel(x, y, s, ops);
           TracedCell& out = cells[owner.cell];
-          out.samples.set(owner.video_index, 0, px);
+          store(out, owner.video_index, px, format);
           const CostBreakdown cost = pixel_cost(ops, costs);
-          out.pixel_cycles[owner.video_index] = cost.total().count();
+          if (format == ScreenFormat::Float) out.pixel_cycles[owner.video_index] = cost.total().count();
           sum.work[owner.cell] += cost;
           sum.rays[owner.cell] += ops.rays;
         }

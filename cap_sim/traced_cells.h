@@ -17,25 +17,34 @@
 
 namespace capsim::sim {
 
-// One cell's pixels, traced: pixel k of its window at samples (k, 0), costing
-// pixel_cycles[k] on a cell; work and rays are the sums over all its pixels.
+// What the screen, and so every video memory, holds: float samples with depth
+// and primitive id and each pixel's cycles (for an EXR), or only the 8-bit sRGB
+// colour a PNG shows (3 bytes a pixel, which keeps a PNG-only run's memory near
+// a render's).
+enum class ScreenFormat { Float, Srgb8 };
+
+// One cell's pixels, traced: pixel k of its window at samples (k, 0) (or at
+// srgb8[3k .. 3k+2]), costing pixel_cycles[k] on a cell (Float only); work and
+// rays are the sums over all its pixels.
 // Antialiased, a pixel's cycles are those of the corners it owns (phase 1) and
 // of its subdivision (phase 3), and work = corner_work + subdivision_work.
 struct TracedCell {
-  Framebuffer samples;  // as Framebuffer::set stores them
-  std::vector<std::uint64_t> pixel_cycles;
+  Framebuffer samples;  // as Framebuffer::set stores them (Float)
+  std::vector<unsigned char> srgb8;  // as the PNG output encodes them (Srgb8)
+  std::vector<std::uint64_t> pixel_cycles;  // (Float)
   CostBreakdown work;  // pixel_cost() summed over the cell's pixels
   std::uint64_t rays = 0;
   // Antialiasing only.
   CostBreakdown corner_work;               // phase 1: tracing the corners it owns
   CostBreakdown subdivision_work;          // phase 3: its pixels' subdivision
-  std::vector<std::uint32_t> pixel_samples;  // primary samples traced per pixel
+  std::vector<std::uint32_t> pixel_samples;  // primary samples traced per pixel (Float)
 };
 
 // One entry per cell of the layout. threads: 0 = all hardware threads.
 // progress may be null; it advances by render_work(width, height, aa).
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CellCosts& costs, int threads, Progress* progress,
-                                    const AntialiasOptions& aa = {});
+                                    const AntialiasOptions& aa = {},
+                                    ScreenFormat format = ScreenFormat::Float);
 
 }  // namespace capsim::sim

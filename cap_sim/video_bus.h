@@ -33,4 +33,9 @@ void for_each_window_pixel(const WindowLayout& layout, Put put) {
 // screen pixel is written twice or never, or a video memory has the wrong size.
 Framebuffer compose_screen(const WindowLayout& layout, const std::vector<const Framebuffer*>& video);
 
+// The same for 8-bit sRGB video memories (pixel k at bytes 3k .. 3k+2): the
+// screen as RGB bytes, row 0 at the top.
+std::vector<unsigned char> compose_screen_srgb8(const WindowLayout& layout,
+                                                const std::vector<const std::vector<unsigned char>*>& video);
+
 }  // namespace capsim::sim
