@@ -46,7 +46,7 @@ void BM_Simulate(benchmark::State& state) {
   for (auto _ : state) {
     const sim::SimulationResult r = sim::simulate_frame(tracer, config, threads, false);
     simulated_seconds = r.frame.seconds(config.profile.clock_hz);
-    benchmark::DoNotOptimize(r.screen.rgba.data());
+    benchmark::DoNotOptimize(r.screens[0].screen.rgba.data());
   }
   state.counters["simulated_s"] = simulated_seconds;
   // Simulated seconds per host second: simulated_s divided by the wall time of one run.

@@ -1,10 +1,11 @@
 #pragma once
 // One cell of CAP: its ID, its window controller, its video memory, and the
-// program it runs for a frame (paper §3.3).
+// program it runs (paper §3.3), frame after frame.
 
 #include "command_bus.h"
 #include "corner_exchange.h"
 #include "event_kernel.h"
+#include "frame_work.h"
 #include "mailbox.h"
 #include "neighbour_links.h"
 #include "timeline.h"
@@ -13,20 +14,25 @@
 
 #include "capsim/render.h"
 
+#include <vector>
+
 namespace capsim::sim {
 
-// What a cell measured about its frame.
+// What a cell measured about its run.
 struct CellRecord {
-  Cycles busy;    // tracing its pixels
+  Cycles busy;    // tracing (corners, pixels, subdivision), all frames
   Cycles comm;    // receiving broadcasts, and sending (waiting for the bus or a link
                   // included)
-  Cycles finish;  // its "done" message reached the host
-  // Antialiasing: the three phases of the frame, each from its start to its end.
+  Cycles finish;  // its last "done" message reached the host
+  // Antialiasing: the three phases, each from its start to its end, summed over
+  // the run's distribution units.
   Cycles trace_corners, exchange, subdivide;
   std::vector<CornerIndex> corners_received;  // ascending
-  std::uint64_t pixels = 0;
+  std::uint64_t pixels = 0;  // over all frames
   std::uint64_t rays = 0;
   CostBreakdown work;  // busy, by Table 4-3's processes
+  std::vector<Cycles> frame_busy;   // per frame: the cycles it worked on it
+  std::vector<Cycles> unit_finish;  // per distribution unit: when its "done" reached the host
 };
 
 class Cell {
@@ -37,48 +43,44 @@ class Cell {
     NeighbourLinks& links;
     const CellGrid& grid;
     Timeline& timeline;
-    const CornerExchange* exchange;  // null: the frame is not antialiased
+    std::vector<FrameWork>& frames;
+    const std::vector<DistributionUnit>& units;
+    bool antialiased;
   };
 
-  // traced: this cell's pixels, traced ahead by the host threads.
-  Cell(CellId id, const CellWindow& window, TracedCell traced, int timeline_track,
-       const Wiring& wiring);
+  // Takes this cell's traced work out of every frame of wiring.frames.
+  Cell(CellId id, int timeline_track, const Wiring& wiring);
 
-  // The program every cell runs for one frame.
-  Process run_frame();
+  // The program every cell runs: each distribution unit of the run in turn.
+  Process run();
 
   Mailbox<BusTransfer>& bus_inbox() { return bus_inbox_; }
   Mailbox<LinkMessage>& link_inbox() { return link_inbox_; }
-  const Framebuffer& video_memory() const { return video_memory_; }
-  const std::vector<unsigned char>& video_memory_srgb8() const { return video_srgb8_; }
-  const CellWindow& window() const { return window_; }
   const CellRecord& record() const { return record_; }
-  // The cycles each of its pixels cost, in video-memory order.
-  const std::vector<std::uint64_t>& pixel_cycles() const { return traced_.pixel_cycles; }
-  // Antialiased: the primary samples traced for each of its pixels.
-  const std::vector<std::uint32_t>& pixel_samples() const { return traced_.pixel_samples; }
   CellId id() const { return id_; }
+  // Its video memory of a frame, once traced: the samples, in its window's
+  // order, with their cycles and, antialiased, their primary samples.
+  const TracedCell& video_memory(int frame) const { return video_[frame]; }
 
  private:
   void take_in(const BusTransfer& t, std::string_view expected);
   // The antialiasing exchange's bookkeeping: a message's corners taken in; a
   // message to relay holds only corners this cell has; every corner its pixels
   // need has come (each throws std::logic_error if not).
-  void take_in(const LinkMessage& m);
-  void check_holds(const CornerMessage& m);
-  void check_has_every_corner();
+  void take_in(const LinkMessage& m, const CornerExchange& exchange);
+  void check_holds(const CornerMessage& m, const CornerExchange& exchange);
+  void check_has_every_corner(const CornerExchange& exchange);
   std::string cell_name(CellId id) const;
+  // A span's name: `what`, with the frame's number when the run has several.
+  std::string frame_name(const std::string& what, int frame) const;
 
   CellId id_;
-  CellWindow window_;
-  TracedCell traced_;
   int track_;
   Wiring wire_;
   Mailbox<BusTransfer> bus_inbox_;
   Mailbox<LinkMessage> link_inbox_;
   std::vector<LinkMessage> early_;  // horizontal messages that came before the vertical ones
-  Framebuffer video_memory_;  // pixel k of the window at (k, 0); filled by the frame
-  std::vector<unsigned char> video_srgb8_;  // or, for an 8-bit screen, at bytes 3k..3k+2
+  std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced
   CellRecord record_;
 };
 

@@ -78,12 +78,13 @@ Command add_simulate_command(CLI::App& app) {
     const sim::SimulationResult result =
         sim::simulate_frame(tracer, config, opts->threads, Progress::stderr_is_terminal());
 
+    const sim::FrameScreen& screen = result.screens.at(0);
     if (config.screen == sim::ScreenFormat::Srgb8) {
-      write_png_rgb8(opts->output, result.width, result.height, result.screen_srgb8);
+      write_png_rgb8(opts->output, result.width, result.height, screen.screen_srgb8);
     } else {
-      std::vector<ExtraChannel> extra = {{"cycles", result.pixel_cycles}};
-      if (config.aa.depth > 0) extra.push_back({"samples", result.pixel_samples});
-      write_image(opts->output, result.screen, extra);
+      std::vector<ExtraChannel> extra = {{"cycles", screen.pixel_cycles}};
+      if (config.aa.depth > 0) extra.push_back({"samples", screen.pixel_samples});
+      write_image(opts->output, screen.screen, extra);
     }
     if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
     if (!sim->trace.empty()) {

@@ -1,6 +1,7 @@
 #include "corner_exchange.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <tuple>
 
 namespace capsim::sim {
@@ -34,26 +35,35 @@ std::vector<std::vector<CornerMessage>> group(std::vector<Leg>& legs, int cell_c
 
 }  // namespace
 
-CornerExchange::CornerExchange(const WindowLayout& layout)
-    : layout_(layout), width_(layout.width()), height_(layout.height()) {
-  const CellGrid& grid = layout.grid();
+CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int first_frame)
+    : frames_(std::move(frames)),
+      first_frame_(first_frame),
+      width_(frames_.at(0)->width()),
+      height_(frames_.at(0)->height()),
+      corners_per_frame_(static_cast<CornerIndex>(width_ + 1) * static_cast<CornerIndex>(height_ + 1)) {
+  const CellGrid& grid = frames_[0]->grid();
   const int cells = grid.cell_count();
   std::vector<Leg> vertical, horizontal;
   std::vector<std::pair<CellId, CornerIndex>> needs;
-  for (int y = 0; y < height_; ++y)
-    for (int x = 0; x < width_; ++x) {
-      const CellId n = layout.owner({x, y}).cell;
-      const int corner_xy[3][2] = {{x + 1, y}, {x, y + 1}, {x + 1, y + 1}};
-      for (const auto& [cx, cy] : corner_xy) {
-        const CellId o = owner(cx, cy);
-        if (o == n) continue;
-        const CornerIndex c = index(cx, cy);
-        needs.emplace_back(n, c);
-        const CellId m = grid.id({grid.position(n).row, grid.position(o).col});
-        if (m != o) vertical.push_back({o, m, c});
-        if (m != n) horizontal.push_back({m, n, c});
+  for (std::size_t f = 0; f < frames_.size(); ++f) {
+    const WindowLayout& layout = *frames_[f];
+    if (layout.width() != width_ || layout.height() != height_ || !(layout.grid() == grid))
+      throw std::logic_error("the frames of one exchange need one screen size and cell grid");
+    for (int y = 0; y < height_; ++y)
+      for (int x = 0; x < width_; ++x) {
+        const CellId n = layout.owner({x, y}).cell;
+        const int corner_xy[3][2] = {{x + 1, y}, {x, y + 1}, {x + 1, y + 1}};
+        for (const auto& [cx, cy] : corner_xy) {
+          const CornerIndex c = index(first_frame_ + static_cast<int>(f), cx, cy);
+          const CellId o = owner(c);
+          if (o == n) continue;
+          needs.emplace_back(n, c);
+          const CellId m = grid.id({grid.position(n).row, grid.position(o).col});
+          if (m != o) vertical.push_back({o, m, c});
+          if (m != n) horizontal.push_back({m, n, c});
+        }
       }
-    }
+  }
   std::sort(needs.begin(), needs.end());
   needs.erase(std::unique(needs.begin(), needs.end()), needs.end());
   needs_.resize(cells);
@@ -62,23 +72,12 @@ CornerExchange::CornerExchange(const WindowLayout& layout)
   horizontal_ = group(horizontal, cells, horizontal_in_);
 }
 
-CellId CornerExchange::owner(int x, int y) const {
-  return layout_.owner({std::min(x, width_ - 1), std::min(y, height_ - 1)}).cell;
-}
-
-std::vector<CornerIndex> CornerExchange::owned_corners(CellId cell) const {
-  const CellWindow& w = layout_.window(cell);
-  std::vector<CornerIndex> out;
-  out.reserve(w.pixel_count());
-  for (int k = 0; k < w.pixel_count(); ++k) {
-    const ScreenPixel p = w.screen_pixel(k);
-    const bool last_x = p.x == width_ - 1, last_y = p.y == height_ - 1;
-    out.push_back(index(p.x, p.y));
-    if (last_x) out.push_back(index(p.x + 1, p.y));
-    if (last_y) out.push_back(index(p.x, p.y + 1));
-    if (last_x && last_y) out.push_back(index(p.x + 1, p.y + 1));
-  }
-  return out;
+CellId CornerExchange::owner(CornerIndex corner) const {
+  const CornerIndex f = corner / corners_per_frame_ - static_cast<CornerIndex>(first_frame_);
+  const CornerIndex k = corner % corners_per_frame_;
+  const int x = static_cast<int>(k % static_cast<CornerIndex>(width_ + 1));
+  const int y = static_cast<int>(k / static_cast<CornerIndex>(width_ + 1));
+  return frames_[f]->owner({std::min(x, width_ - 1), std::min(y, height_ - 1)}).cell;
 }
 
 }  // namespace capsim::sim

@@ -19,6 +19,10 @@
 // the last grid row and column need corners from the opposite edge (the next
 // R x C square); how far those travel depends on the links' topology (mesh:
 // across the grid; torus: one hop over the wrap-around link).
+//
+// One exchange can serve several frames at once (a group of frame-averaged
+// frames, each with its own dot shift): the corners of all of them travel in
+// the same messages, one per pair of cells and step.
 
 #include "cell_grid.h"
 #include "window_controller.h"
@@ -28,7 +32,8 @@
 
 namespace capsim::sim {
 
-// Corners are numbered row by row: y * (W + 1) + x.
+// Corners are numbered frame by frame, then row by row:
+// frame * (W + 1) * (H + 1) + y * (W + 1) + x.
 using CornerIndex = std::uint32_t;
 
 struct CornerMessage {
@@ -41,20 +46,20 @@ enum class ExchangeStep { Vertical, Horizontal };
 
 class CornerExchange {
  public:
-  explicit CornerExchange(const WindowLayout& layout);
+  // One layout per frame, all of one screen size and cell grid, for the run's
+  // frames first_frame, first_frame + 1, ...; they must outlive the exchange.
+  explicit CornerExchange(std::vector<const WindowLayout*> frames, int first_frame = 0);
+  explicit CornerExchange(const WindowLayout& layout) : CornerExchange(std::vector{&layout}) {}
 
-  // The cell whose video memory holds corner (x, y).
-  CellId owner(int x, int y) const;
-  CornerIndex index(int x, int y) const {
-    return static_cast<CornerIndex>(y) * static_cast<CornerIndex>(width_ + 1) + x;
+  // The cell whose video memory holds a corner.
+  CellId owner(CornerIndex corner) const;
+  // Corner (x, y) of the run's frame `frame`.
+  CornerIndex index(int frame, int x, int y) const {
+    return static_cast<CornerIndex>(frame) * corners_per_frame_ +
+           static_cast<CornerIndex>(y) * static_cast<CornerIndex>(width_ + 1) + x;
   }
   int width() const { return width_; }
   int height() const { return height_; }
-
-  // The corners a cell traces in phase 1, in the order it traces them: its
-  // pixels' own corners in video-memory order, each followed by the screen's
-  // extra corners that go with it (right, below, below-right).
-  std::vector<CornerIndex> owned_corners(CellId cell) const;
 
   // The messages a cell sends in a step, in order of destination.
   const std::vector<CornerMessage>& sends(CellId cell, ExchangeStep step) const {
@@ -68,8 +73,10 @@ class CornerExchange {
   const std::vector<CornerIndex>& needs(CellId cell) const { return needs_[cell]; }
 
  private:
-  const WindowLayout& layout_;
+  std::vector<const WindowLayout*> frames_;
+  int first_frame_;
   int width_, height_;
+  CornerIndex corners_per_frame_;
   std::vector<std::vector<CornerIndex>> needs_;
   std::vector<std::vector<CornerMessage>> vertical_, horizontal_;
   std::vector<int> vertical_in_, horizontal_in_;

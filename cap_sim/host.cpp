@@ -9,45 +9,56 @@
 
 namespace capsim::sim {
 
-Host::Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes,
-           const SceneFootprint& footprint, Cycles voxel_generation)
+Host::Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes)
     : wire_(wiring),
       track_(timeline_track),
       cell_count_(cell_count),
       program_bytes_(program_bytes),
-      footprint_(footprint),
-      voxel_generation_(voxel_generation),
       bus_inbox_(wiring.kernel) {}
 
-Process Host::run_frame() {
-  // Voxel generation runs on the host before anything is sent (§5: "done on the
-  // host today").
-  const Cycles start = wire_.kernel.now();
-  co_await wire_.kernel.delay(voxel_generation_);
-  wire_.timeline.span(track_, "voxel generation", "compute", start, wire_.kernel.now());
+Process Host::run() {
+  const bool sequence = wire_.frames.size() > 1;
+  auto frame_name = [&](std::string_view what, int f) {
+    return sequence ? fmt::format("{}, frame {}", what, f) : std::string(what);
+  };
+  for (std::size_t u = 0; u < wire_.units.size(); ++u) {
+    const DistributionUnit& unit = wire_.units[u];
+    const int first = unit.first_frame, end = unit.first_frame + unit.frames;
+    unit_start_.push_back(wire_.kernel.now());
 
-  // Broadcast program, scene and voxel data, then the start command: each one
-  // transfer that reaches every cell.
-  const std::pair<std::string_view, std::uint64_t> broadcasts[] = {
-      {kProgramBroadcast, program_bytes_},
-      {kSceneBroadcast, footprint_.scene_bytes()},
-      {kVoxelBroadcast, footprint_.voxel_bytes()},
-      {kStartCommand, kStartCommandBytes}};
-  for (const auto& [label, bytes] : broadcasts) {
-    const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes, std::string(label));
-    wire_.timeline.span(track_, fmt::format("broadcast {}", label), "broadcast", t.granted,
-                        t.delivered, t.bytes);
-  }
+    // Voxel generation runs on the host before anything is sent (§5: "done on
+    // the host today").
+    for (int f = first; f < end; ++f) {
+      const Cycles start = wire_.kernel.now();
+      co_await wire_.kernel.delay(wire_.frames[f].voxel_generation);
+      wire_.timeline.span(track_, frame_name("voxel generation", f), "compute", start, wire_.kernel.now());
+    }
 
-  // Collect one completion message from every cell.
-  const Cycles collecting = wire_.kernel.now();
-  for (int received = 0; received < cell_count_; ++received) {
-    const BusTransfer t = co_await bus_inbox_.receive();
-    if (t.label != kDoneMessage)
-      throw std::logic_error(fmt::format("host expected \"done\", got \"{}\"", t.label));
+    // Broadcast the program (once), each frame's scene and voxel data, then the
+    // start command: each one transfer that reaches every cell.
+    std::vector<std::pair<std::string_view, std::uint64_t>> broadcasts;
+    if (u == 0) broadcasts.emplace_back(kProgramBroadcast, program_bytes_);
+    for (int f = first; f < end; ++f) {
+      broadcasts.emplace_back(kSceneBroadcast, wire_.frames[f].footprint.scene_bytes());
+      broadcasts.emplace_back(kVoxelBroadcast, wire_.frames[f].footprint.voxel_bytes());
+    }
+    broadcasts.emplace_back(kStartCommand, kStartCommandBytes);
+    for (const auto& [label, bytes] : broadcasts) {
+      const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes, std::string(label));
+      wire_.timeline.span(track_, fmt::format("broadcast {}", label), "broadcast", t.granted, t.delivered,
+                          t.bytes);
+    }
+
+    // Collect one completion message from every cell.
+    const Cycles collecting = wire_.kernel.now();
+    for (int received = 0; received < cell_count_; ++received) {
+      const BusTransfer t = co_await bus_inbox_.receive();
+      if (t.label != kDoneMessage)
+        throw std::logic_error(fmt::format("host expected \"done\", got \"{}\"", t.label));
+    }
+    unit_end_.push_back(wire_.kernel.now());
+    wire_.timeline.span(track_, "wait for cells", "wait", collecting, wire_.kernel.now());
   }
-  frame_end_ = wire_.kernel.now();
-  wire_.timeline.span(track_, "wait for cells", "wait", collecting, frame_end_);
 }
 
 }  // namespace capsim::sim

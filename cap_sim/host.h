@@ -1,14 +1,19 @@
 #pragma once
-// The host computer: it generates the voxel data (Algorithm-3, charged with the
-// profile's host costs), broadcasts program, scene and voxel data over the command
-// bus, starts the cells and collects their completion messages.
+// The host computer: for each distribution unit of the run it generates the
+// voxel data of the unit's frames (Algorithm-3, charged with the profile's host
+// costs), broadcasts program (before the first unit), scene and voxel data of
+// each frame over the command bus, starts the cells and collects their
+// completion messages; the next unit starts when every cell has finished this
+// one.
 
 #include "command_bus.h"
 #include "cost_profile.h"
 #include "event_kernel.h"
+#include "frame_work.h"
 #include "mailbox.h"
-#include "scene_footprint.h"
 #include "timeline.h"
+
+#include <vector>
 
 namespace capsim::sim {
 
@@ -18,28 +23,28 @@ class Host {
     EventKernel& kernel;
     CommandBus& bus;
     Timeline& timeline;
+    const std::vector<FrameWork>& frames;
+    const std::vector<DistributionUnit>& units;
   };
 
-  // voxel_generation: the cycles Algorithm-3 costs the host for this scene.
-  Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes,
-       const SceneFootprint& footprint, Cycles voxel_generation);
+  Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes);
 
-  // The host's part of one frame.
-  Process run_frame();
+  // The host's program: each unit in turn.
+  Process run();
 
   Mailbox<BusTransfer>& bus_inbox() { return bus_inbox_; }
-  // When the last cell's completion message arrived: the frame time.
-  Cycles frame_end() const { return frame_end_; }
+  // When each unit started (the host began its voxel generation) and ended (the
+  // last cell's completion message arrived); the last end is the run's time.
+  const std::vector<Cycles>& unit_start() const { return unit_start_; }
+  const std::vector<Cycles>& unit_end() const { return unit_end_; }
 
  private:
   Wiring wire_;
   int track_;
   int cell_count_;
   std::uint64_t program_bytes_;
-  SceneFootprint footprint_;
-  Cycles voxel_generation_;
   Mailbox<BusTransfer> bus_inbox_;
-  Cycles frame_end_;
+  std::vector<Cycles> unit_start_, unit_end_;
 };
 
 }  // namespace capsim::sim

@@ -2,7 +2,6 @@
 
 #include "cell.h"
 #include "command_bus.h"
-#include "corner_exchange.h"
 #include "event_kernel.h"
 #include "host.h"
 #include "capsim/progress.h"
@@ -35,38 +34,96 @@ std::string sender_name(Endpoint e, const CellGrid& grid) {
   return fmt::format("cell[{},{}]", p.row, p.col);
 }
 
+// The units the host hands the frames out in (frame_work.h).
+std::vector<DistributionUnit> distribution_units(const std::vector<FrameWork>& frames,
+                                                 const MachineConfig& config) {
+  const int count = static_cast<int>(frames.size());
+  const int group = config.frame_average ? config.cells.cell_count() : 1;
+  std::vector<DistributionUnit> units;
+  for (int first = 0; first < count; first += group) {
+    DistributionUnit u;
+    u.first_frame = first;
+    u.frames = std::min(group, count - first);
+    if (config.aa.depth > 0) {
+      std::vector<const WindowLayout*> layouts;
+      for (int f = first; f < first + u.frames; ++f) layouts.push_back(&frames[f].layout);
+      u.exchange = std::make_unique<CornerExchange>(layouts, first);
+    }
+    units.push_back(std::move(u));
+  }
+  return units;
+}
+
+// Every video memory of a frame, composed as the video bus shows it.
+FrameScreen compose_frame(const WindowLayout& layout, const std::vector<std::unique_ptr<Cell>>& cells,
+                          int frame, const MachineConfig& config) {
+  FrameScreen out;
+  if (config.screen == ScreenFormat::Srgb8) {
+    std::vector<const std::vector<unsigned char>*> video;
+    for (const auto& cell : cells) video.push_back(&cell->video_memory(frame).srgb8);
+    out.screen_srgb8 = compose_screen_srgb8(layout, video);
+    return out;
+  }
+  std::vector<const Framebuffer*> video;
+  for (const auto& cell : cells) video.push_back(&cell->video_memory(frame).samples);
+  out.screen = compose_screen(layout, video);
+  out.pixel_cycles.assign(static_cast<std::size_t>(layout.width()) * layout.height(), 0.0f);
+  for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
+    out.pixel_cycles[s] = static_cast<float>(cells[c]->video_memory(frame).pixel_cycles[k]);
+  });
+  if (config.aa.depth > 0) {
+    out.pixel_samples.assign(out.pixel_cycles.size(), 0.0f);
+    for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
+      out.pixel_samples[s] = static_cast<float>(cells[c]->video_memory(frame).pixel_samples[k]);
+    });
+  }
+  return out;
+}
+
 }  // namespace
 
-SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
-                           std::vector<TracedCell> traced, const MachineConfig& config) {
+FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
+                     const CostProfile& profile) {
+  FrameWork f{layout, scene_footprint(scene),
+              voxel_generation_cost(scene.voxel_counts, profile.host).total(), std::move(traced)};
+  return f;
+}
+
+WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame) {
+  return WindowLayout(config.mode, config.cells, width, height,
+                      config.frame_average ? dot_shift_for_frame(config.cells, frame) : DotShift{});
+}
+
+SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& config) {
   const CostProfile& profile = config.profile;
   const CellGrid grid = config.cells;
+  if (config.frame_average && config.mode != PixelMode::Dot)
+    throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
+  if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
   SimulationResult result;
   result.config = config;
-  result.footprint = scene_footprint(scene);
-  check_cell_memory(result.footprint, profile);
+  result.footprint = frames[0].footprint;
+  for (const FrameWork& f : frames) check_cell_memory(f.footprint, profile);
 
-  const CostBreakdown voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.host);
+  CostBreakdown voxel_generation;
+  for (const FrameWork& f : frames) voxel_generation[CostCategory::VoxelGeneration] += f.voxel_generation;
+  const std::vector<DistributionUnit> units = distribution_units(frames, config);
 
   EventKernel kernel;
   CommandBus bus(kernel, profile);
   NeighbourLinks links(kernel, grid, profile);
-  std::optional<CornerExchange> exchange;
-  if (config.aa.depth > 0) exchange.emplace(layout);
   Timeline& timeline = result.timeline;
   const int host_track = timeline.add_track("host");
   const int bus_track = timeline.add_track("command bus");
 
-  Host host({kernel, bus, timeline}, host_track, grid.cell_count(), profile.program_bytes,
-            result.footprint, voxel_generation.total());
+  Host host({kernel, bus, timeline, frames, units}, host_track, grid.cell_count(), profile.program_bytes);
   std::vector<std::unique_ptr<Cell>> cells;
   cells.reserve(grid.cell_count());
   for (CellId id = 0; id < grid.cell_count(); ++id) {
     const CellPosition p = grid.position(id);
     const int track = timeline.add_track(fmt::format("cell[{},{}]", p.row, p.col));
-    cells.push_back(std::make_unique<Cell>(id, layout.window(id), std::move(traced.at(id)), track,
-                                           Cell::Wiring{kernel, bus, links, grid, timeline,
-                                                        exchange ? &*exchange : nullptr}));
+    cells.push_back(std::make_unique<Cell>(
+        id, track, Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, config.aa.depth > 0}));
   }
 
   bus.on_delivery([&](const BusTransfer& t) {
@@ -78,19 +135,17 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
       cells.at(t.receiver)->bus_inbox().deliver(t);
     }
   });
-
   links.on_delivery([&](const LinkMessage& m) { cells.at(m.to)->link_inbox().deliver(m); });
 
-  kernel.spawn(host.run_frame());
-  for (auto& cell : cells) kernel.spawn(cell->run_frame());
+  kernel.spawn(host.run());
+  for (auto& cell : cells) kernel.spawn(cell->run());
   kernel.run();
   if (!kernel.all_processes_finished())
-    throw std::logic_error("the simulated frame deadlocked: a process waits for a message that never came");
+    throw std::logic_error("the simulated run deadlocked: a process waits for a message that never came");
 
   for (const BusTransfer& t : bus.log())
     timeline.span(bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, grid)),
                   t.receiver == kAllCells ? "broadcast" : "message", t.granted, t.released, t.bytes);
-
   // One track per link direction that carried anything, after the cells'.
   std::vector<int> link_tracks(static_cast<std::size_t>(grid.cell_count()) * 4, -1);
   for (const LinkTraffic& t : links.traffic()) {
@@ -99,13 +154,15 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
         timeline.add_track(fmt::format("link cell[{},{}] {}", p.row, p.col, to_string(t.direction)));
   }
   for (const LinkHop& h : links.hops())
-    timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)],
-                  h.label, "link", h.begin, h.end, h.bytes);
+    timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)], h.label,
+                  "link", h.begin, h.end, h.bytes);
   result.links = links.traffic();
   result.link_messages = links.log();
 
   result.events = kernel.events_run();
-  result.frame = host.frame_end();
+  result.frame = host.unit_end().back();
+  for (std::size_t u = 0; u < units.size(); ++u)
+    result.units.push_back({units[u].first_frame, units[u].frames, host.unit_start()[u], host.unit_end()[u]});
   result.breakdown = voxel_generation;
   for (const auto& cell : cells) {
     const CellRecord& r = cell->record();
@@ -123,48 +180,60 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     c.exchange = r.exchange;
     c.subdivide = r.subdivide;
     c.corners_received = r.corners_received;
+    c.frame_busy = r.frame_busy;
+    c.unit_finish = r.unit_finish;
     result.breakdown += r.work;
-    result.cells.push_back(c);
+    result.cells.push_back(std::move(c));
   }
-  result.width = layout.width();
-  result.height = layout.height();
-  if (config.screen == ScreenFormat::Srgb8) {
-    std::vector<const std::vector<unsigned char>*> video;
-    for (const auto& cell : cells) video.push_back(&cell->video_memory_srgb8());
-    result.screen_srgb8 = compose_screen_srgb8(layout, video);
-    return result;
-  }
-  std::vector<const Framebuffer*> video;
-  for (const auto& cell : cells) video.push_back(&cell->video_memory());
-  result.screen = compose_screen(layout, video);
-
-  result.pixel_cycles.assign(static_cast<std::size_t>(layout.width()) * layout.height(), 0.0f);
-  for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
-    result.pixel_cycles[s] = static_cast<float>(cells[c]->pixel_cycles()[k]);
-  });
-  if (exchange) {
-    result.pixel_samples.assign(result.pixel_cycles.size(), 0.0f);
-    for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
-      result.pixel_samples[s] = static_cast<float>(cells[c]->pixel_samples()[k]);
-    });
-  }
+  result.width = frames[0].layout.width();
+  result.height = frames[0].layout.height();
+  for (std::size_t f = 0; f < frames.size(); ++f)
+    result.screens.push_back(compose_frame(frames[f].layout, cells, static_cast<int>(f), config));
   return result;
+}
+
+SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
+                           std::vector<TracedCell> traced, const MachineConfig& config) {
+  std::vector<FrameWork> frames;
+  frames.push_back(frame_work(scene, layout, std::move(traced), config.profile));
+  return run_frames(std::move(frames), config);
+}
+
+SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const MachineConfig& config,
+                                 int threads, bool show_progress) {
+  if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
+  if (config.frame_average && config.mode != PixelMode::Dot)
+    throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
+  const Camera& cam = frames[0]->scene().camera;
+  // Refuse a scene that does not fit before spending time tracing it.
+  for (const Tracer* t : frames) check_cell_memory(scene_footprint(t->scene()), config.profile);
+  std::vector<FrameWork> work;
+  work.reserve(frames.size());
+  {
+    const bool one = frames.size() == 1;
+    Progress progress(one ? "tracing" : "frames",
+                      one ? render_work(cam.width, cam.height, config.aa) : frames.size(), show_progress);
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      const Tracer& tracer = *frames[f];
+      const Camera& c = tracer.scene().camera;
+      if (c.width != cam.width || c.height != cam.height)
+        throw std::invalid_argument(fmt::format("frame {} is {}x{} where frame 0 is {}x{}", f, c.width, c.height,
+                                                cam.width, cam.height));
+      const WindowLayout layout = frame_layout(config, cam.width, cam.height, static_cast<int>(f));
+      std::vector<TracedCell> traced = trace_cells(tracer, layout, config.profile.cell, threads,
+                                                   one ? &progress : nullptr, config.aa, config.screen);
+      work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config.profile));
+      if (!one) progress.advance(1);
+    }
+  }
+  // The event loop is serial; composing the screens uses the same host threads.
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  return arena.execute([&] { return run_frames(std::move(work), config); });
 }
 
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
                                 bool show_progress) {
-  const Camera& cam = tracer.scene().camera;
-  // Refuse a scene that does not fit before spending time tracing it.
-  check_cell_memory(scene_footprint(tracer.scene()), config.profile);
-  const WindowLayout layout(config.mode, config.cells, cam.width, cam.height);
-  std::vector<TracedCell> traced;
-  {
-    Progress progress("tracing", render_work(cam.width, cam.height, config.aa), show_progress);
-    traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress, config.aa, config.screen);
-  }
-  // The event loop is serial; composing the screen uses the same host threads.
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  return arena.execute([&] { return run_frame(tracer.scene(), layout, std::move(traced), config); });
+  return simulate_frames({&tracer}, config, threads, show_progress);
 }
 
 }  // namespace capsim::sim

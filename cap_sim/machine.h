@@ -1,11 +1,13 @@
 #pragma once
-// The whole machine for one frame: host, command bus, neighbour links and an
-// R x C grid of cells, run by the event kernel. The tracing itself is done ahead
-// by host threads (trace_cells); the event loop alone decides simulated time.
+// The whole machine: host, command bus, neighbour links and an R x C grid of
+// cells, run by the event kernel, for one frame or a sequence of frames. The
+// tracing itself is done ahead by host threads (trace_cells); the event loop
+// alone decides simulated time.
 
 #include "cell_grid.h"
 #include "corner_exchange.h"
 #include "cost_profile.h"
+#include "frame_work.h"
 #include "neighbour_links.h"
 #include "scene_footprint.h"
 #include "timeline.h"
@@ -27,36 +29,56 @@ struct MachineConfig {
   CostProfile profile;
   AntialiasOptions aa;  // depth 0: one sample per pixel, no exchange
   ScreenFormat screen = ScreenFormat::Float;
+  // Frame-averaged distribution (dot mode only): frames go out in groups of
+  // R x C, each frame with its own dot shift (dot_shift_for_frame), and the
+  // cells run through a group without waiting for each other.
+  bool frame_average = false;
 };
 
 struct CellReport {
   CellId id = 0;
   CellPosition position;
-  std::uint64_t pixels = 0;
+  std::uint64_t pixels = 0;  // over all frames
   std::uint64_t rays = 0;
   Cycles busy, idle, comm, finish;  // idle = finish - busy - comm
   CostBreakdown work;
   // Antialiasing: each phase from its start to its end (the exchange includes
-  // its waits), and the corners it took in over the links.
+  // its waits), summed over the units, and the corners it took in over the links.
   Cycles trace_corners, exchange, subdivide;
   std::vector<CornerIndex> corners_received;  // ascending
+  std::vector<Cycles> frame_busy;   // per frame: the cycles it worked on it
+  std::vector<Cycles> unit_finish;  // per unit: when its "done" reached the host
 };
 
-struct SimulationResult {
-  MachineConfig config;
-  SceneFootprint footprint;
-  std::vector<CellReport> cells;
-  CostBreakdown breakdown;   // every cell's work plus the host's voxel generation
-  Cycles frame;              // the last completion reached the host: the frame time
-  int width = 0, height = 0;  // the screen's
-  // What the video bus shows, in the config's screen format: floats (with the
-  // cycles spent on each pixel and, antialiased, its primary samples), or the
-  // 8-bit sRGB bytes a PNG holds; the other members stay empty.
+// One frame as the video bus showed it, in the run's screen format: floats
+// (with the cycles spent on each pixel and, antialiased, its primary samples),
+// or the 8-bit sRGB bytes a PNG holds; the other members stay empty.
+struct FrameScreen {
   Framebuffer screen;
   std::vector<float> pixel_cycles;   // row-major
   std::vector<float> pixel_samples;  // row-major
   std::vector<unsigned char> screen_srgb8;
-  std::vector<LinkTraffic> links;    // every link that carried a message
+};
+
+// A distribution unit as it ran: its frames, and when the host started it and
+// collected it.
+struct UnitTimes {
+  int first_frame = 0;
+  int frames = 1;
+  Cycles start, end;
+};
+
+struct SimulationResult {
+  MachineConfig config;
+  SceneFootprint footprint;  // the first frame's
+  std::vector<CellReport> cells;
+  CostBreakdown breakdown;  // every cell's work plus the host's voxel generation
+  Cycles frame;             // the last completion reached the host: the run's time
+                            // (for one frame, the frame time)
+  int width = 0, height = 0;
+  std::vector<FrameScreen> screens;  // one per frame
+  std::vector<UnitTimes> units;
+  std::vector<LinkTraffic> links;          // every link that carried a message
   std::vector<LinkMessage> link_messages;  // in order of arrival
   Timeline timeline;
   std::uint64_t events = 0;  // events the kernel ran
@@ -66,14 +88,29 @@ struct SimulationResult {
 // naming the needed and the available bytes.
 void check_cell_memory(const SceneFootprint& footprint, const CostProfile& profile);
 
-// Runs one frame on the machine with the work traced ahead.
-// Precondition: traced came from trace_cells on `scene` with `layout` and
-// config.profile's cell costs; layout has config's mode and grid.
+// The work of one frame, traced ahead: precondition: traced came from
+// trace_cells on `scene` with `layout` and the profile's cell costs.
+FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
+                     const CostProfile& profile);
+
+// Runs the frames on the machine, in the units config asks for. Precondition:
+// the frames share one screen size; their layouts have config's mode and grid
+// (and, frame averaged, frame f the shift dot_shift_for_frame(grid, f)).
+SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& config);
+
+// One frame traced ahead, as run_frames.
 SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
                            std::vector<TracedCell> traced, const MachineConfig& config);
 
-// trace_cells + run_frame. threads: 0 = all hardware threads; the result does not
-// depend on it. show_progress: progress on stderr (see Progress).
+// The window layout of frame f of a run.
+WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame);
+
+// trace_cells for every frame + run_frames. threads: 0 = all hardware threads;
+// the result does not depend on it. show_progress: progress on stderr (see
+// Progress), by pixels for one frame, by frames for several. Precondition: the
+// frames' cameras have one size.
+SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const MachineConfig& config,
+                                 int threads, bool show_progress);
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
                                 bool show_progress);
 

@@ -49,10 +49,18 @@ int strided_count(int length, int first, int stride) {
 
 }  // namespace
 
-WindowLayout::WindowLayout(PixelMode mode, CellGrid grid, int width, int height)
-    : mode_(mode), grid_(grid), width_(width), height_(height) {
+DotShift dot_shift_for_frame(const CellGrid& grid, int frame) {
+  const int k = frame % grid.cell_count();
+  return {k / grid.cols, k % grid.cols};
+}
+
+WindowLayout::WindowLayout(PixelMode mode, CellGrid grid, int width, int height, DotShift shift)
+    : mode_(mode), grid_(grid), shift_(shift), width_(width), height_(height) {
   if (width < 1 || height < 1 || grid.rows < 1 || grid.cols < 1)
     throw std::invalid_argument("window layout needs a non-empty screen and cell grid");
+  if (shift.rows < 0 || shift.rows >= grid.rows || shift.cols < 0 || shift.cols >= grid.cols ||
+      (mode != PixelMode::Dot && shift != DotShift{}))
+    throw std::invalid_argument("a dot shift must lie inside the grid, and only in dot mode");
   const int cells = grid.cell_count();
   windows_.reserve(cells);
   for (CellId id = 0; id < cells; ++id) {
@@ -69,10 +77,12 @@ WindowLayout::WindowLayout(PixelMode mode, CellGrid grid, int width, int height)
       case PixelMode::Line:
         windows_.emplace_back(0, id, width, strided_count(height, id, cells), 1, cells);
         break;
-      case PixelMode::Dot:
-        windows_.emplace_back(p.col, p.row, strided_count(width, p.col, grid.cols),
-                              strided_count(height, p.row, grid.rows), grid.cols, grid.rows);
+      case PixelMode::Dot: {
+        const int x0 = (p.col + shift.cols) % grid.cols, y0 = (p.row + shift.rows) % grid.rows;
+        windows_.emplace_back(x0, y0, strided_count(width, x0, grid.cols),
+                              strided_count(height, y0, grid.rows), grid.cols, grid.rows);
         break;
+      }
     }
   }
 }
@@ -92,9 +102,12 @@ PixelOwner WindowLayout::owner(ScreenPixel s) const {
       return {s.y % cells, (s.y / cells) * width_ + s.x};
     }
     case PixelMode::Dot: {
-      const CellPosition p{s.y % grid_.rows, s.x % grid_.cols};
-      return {grid_.id(p), (s.y / grid_.rows) * strided_count(width_, p.col, grid_.cols) +
-                               s.x / grid_.cols};
+      // The position in the square, and the cell the shift puts there.
+      const int py = s.y % grid_.rows, px = s.x % grid_.cols;
+      const CellPosition cell{(py - shift_.rows + grid_.rows) % grid_.rows,
+                              (px - shift_.cols + grid_.cols) % grid_.cols};
+      return {grid_.id(cell), (s.y / grid_.rows) * strided_count(width_, px, grid_.cols) +
+                                  s.x / grid_.cols};
     }
   }
   throw std::logic_error("unknown pixel mode");

@@ -8,7 +8,9 @@
 //          rows and columns split as evenly as possible;
 //   line:  every (R*C)-th screen row, starting at row k, full width;
 //   dot:   in every R x C square of the screen (R rows, C columns) the pixel at the
-//          cell's own (col, row) position (the paper's 8x8 dot mode).
+//          cell's own (col, row) position (the paper's 8x8 dot mode); shifted by
+//          (rows, cols) = (a, b), cell (r, c) takes position ((r + a) mod R,
+//          (c + b) mod C) instead (frame-averaged distribution, dot_shift_for_frame).
 // Screens that are not multiples of the grid are covered the same way; cells may
 // then own different pixel counts, or none at all.
 
@@ -56,17 +58,32 @@ struct PixelOwner {
   bool operator==(const PixelOwner&) const = default;
 };
 
+// How far the dot pattern is turned: rows down, columns right, on the grid's torus.
+struct DotShift {
+  int rows = 0;
+  int cols = 0;
+  bool operator==(const DotShift&) const = default;
+};
+
+// The shift of frame f under frame-averaged distribution: frames f = 0, 1, ...
+// take the shifts (0, 0), (0, 1), ..., (0, C-1), (1, 0), ... in row-major order,
+// so over any R x C consecutive frames every cell owns every position of the
+// square exactly once.
+DotShift dot_shift_for_frame(const CellGrid& grid, int frame);
+
 // The window set-up of the whole machine for one mode, grid and screen size.
 class WindowLayout {
  public:
-  // Precondition: width, height >= 1; grid sides >= 1.
-  WindowLayout(PixelMode mode, CellGrid grid, int width, int height);
+  // Precondition: width, height >= 1; grid sides >= 1; shift only in dot mode,
+  // each part in 0 .. side-1.
+  WindowLayout(PixelMode mode, CellGrid grid, int width, int height, DotShift shift = {});
 
   const CellWindow& window(CellId cell) const { return windows_[cell]; }
   // The inverse of the windows, computed directly from the mode's rule.
   PixelOwner owner(ScreenPixel p) const;
 
   PixelMode mode() const { return mode_; }
+  DotShift shift() const { return shift_; }
   const CellGrid& grid() const { return grid_; }
   int width() const { return width_; }
   int height() const { return height_; }
@@ -74,6 +91,7 @@ class WindowLayout {
  private:
   PixelMode mode_;
   CellGrid grid_;
+  DotShift shift_;
   int width_, height_;
   std::vector<CellWindow> windows_;
 };

@@ -111,9 +111,9 @@ TEST(Machine, ScreenEqualsTheTracerAloneInEveryMode) {
   for (PixelMode mode : {PixelMode::Dot, PixelMode::Line, PixelMode::Block})
     for (CellGrid grid : {CellGrid{8, 8}, CellGrid{1, 1}, CellGrid{3, 7}, CellGrid{32, 32}}) {
       const SimulationResult r = simulate_frame(tracer, config_of(grid, mode), 2, false);
-      EXPECT_TRUE(same_floats(r.screen.rgba, rendered.rgba)) << to_string(mode) << " " << to_string(grid);
-      EXPECT_TRUE(same_floats(r.screen.depth, rendered.depth)) << to_string(mode) << " " << to_string(grid);
-      EXPECT_TRUE(same_floats(r.screen.id, rendered.id)) << to_string(mode) << " " << to_string(grid);
+      EXPECT_TRUE(same_floats(r.screens[0].screen.rgba, rendered.rgba)) << to_string(mode) << " " << to_string(grid);
+      EXPECT_TRUE(same_floats(r.screens[0].screen.depth, rendered.depth)) << to_string(mode) << " " << to_string(grid);
+      EXPECT_TRUE(same_floats(r.screens[0].screen.id, rendered.id)) << to_string(mode) << " " << to_string(grid);
     }
 }
 
@@ -126,8 +126,8 @@ TEST(Machine, ResultsDoNotDependOnHostThreads) {
   EXPECT_EQ(report_json(one).dump(), report_json(two).dump());
   EXPECT_EQ(one.timeline.to_chrome_trace("t", 8'000'000).dump(),
             two.timeline.to_chrome_trace("t", 8'000'000).dump());
-  EXPECT_TRUE(same_floats(one.screen.rgba, two.screen.rgba));
-  EXPECT_TRUE(same_floats(one.pixel_cycles, two.pixel_cycles));
+  EXPECT_TRUE(same_floats(one.screens[0].screen.rgba, two.screens[0].screen.rgba));
+  EXPECT_TRUE(same_floats(one.screens[0].pixel_cycles, two.screens[0].pixel_cycles));
   EXPECT_EQ(one.events, two.events);
 }
 

@@ -35,17 +35,17 @@ TEST(ScreenFormat, EightBitScreenIsTheEncodedFloatScreenAndTheSameRun) {
       EXPECT_EQ(report_json(bytes).dump(), report_json(floats).dump()) << where;
       EXPECT_EQ(bytes.timeline.to_chrome_trace("t", 1).dump(), floats.timeline.to_chrome_trace("t", 1).dump())
           << where;
-      ASSERT_EQ(bytes.screen_srgb8.size(), 45u * 38u * 3u) << where;
+      ASSERT_EQ(bytes.screens[0].screen_srgb8.size(), 45u * 38u * 3u) << where;
       std::vector<PixelSample> row(1);
       for (std::size_t k = 0; k < 45u * 38u; ++k) {
-        row[0].color = {floats.screen.rgba[4 * k], floats.screen.rgba[4 * k + 1], floats.screen.rgba[4 * k + 2]};
+        row[0].color = {floats.screens[0].screen.rgba[4 * k], floats.screens[0].screen.rgba[4 * k + 1], floats.screens[0].screen.rgba[4 * k + 2]};
         unsigned char rgb[3];
         encode_srgb8_row(row, rgb);
-        ASSERT_EQ(0, std::memcmp(rgb, bytes.screen_srgb8.data() + 3 * k, 3)) << where << " pixel " << k;
+        ASSERT_EQ(0, std::memcmp(rgb, bytes.screens[0].screen_srgb8.data() + 3 * k, 3)) << where << " pixel " << k;
       }
-      EXPECT_TRUE(bytes.screen.rgba.empty());
-      EXPECT_TRUE(bytes.pixel_cycles.empty());
-      EXPECT_EQ(floats.pixel_cycles.size(), 45u * 38u);
+      EXPECT_TRUE(bytes.screens[0].screen.rgba.empty());
+      EXPECT_TRUE(bytes.screens[0].pixel_cycles.empty());
+      EXPECT_EQ(floats.screens[0].pixel_cycles.size(), 45u * 38u);
     }
 }
 

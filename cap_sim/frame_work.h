@@ -1,0 +1,35 @@
+#pragma once
+// The work of a run, traced ahead by the host threads, and how the host hands
+// it out: a run is a sequence of frames, distributed in units. Without frame
+// averaging a unit is one frame and the host starts the next unit when every
+// cell has finished this one (the display shows whole frames). With frame
+// averaging (dot mode) a unit is a group of R x C frames, each with its own dot
+// shift; the cells run through the group's frames without waiting for each
+// other, and the host collects the group.
+
+#include "corner_exchange.h"
+#include "cycles.h"
+#include "scene_footprint.h"
+#include "traced_cells.h"
+#include "window_controller.h"
+
+#include <memory>
+#include <vector>
+
+namespace capsim::sim {
+
+struct FrameWork {
+  WindowLayout layout;
+  SceneFootprint footprint;  // what "scene" and "voxel data" broadcast for it
+  Cycles voxel_generation;   // the host's Algorithm-3 for it
+  std::vector<TracedCell> cells;
+};
+
+struct DistributionUnit {
+  int first_frame = 0;
+  int frames = 1;
+  // Antialiasing: the corner exchange of all the unit's frames at once.
+  std::unique_ptr<CornerExchange> exchange;
+};
+
+}  // namespace capsim::sim
