@@ -10,6 +10,7 @@
 #include <fmt/core.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -78,6 +79,29 @@ FrameScreen compose_frame(const WindowLayout& layout, const std::vector<std::uni
     });
   }
   return out;
+}
+
+// The most video memory a cell needs for a unit (UnitTimes::video_memory_bytes).
+std::uint64_t unit_video_memory(const std::vector<FrameWork>& frames, const DistributionUnit& unit,
+                                const std::vector<std::unique_ptr<Cell>>& cells) {
+  std::uint64_t most = 0;
+  for (const auto& cell : cells) {
+    std::uint64_t bytes = 0;
+    for (int f = unit.first_frame; f < unit.first_frame + unit.frames; ++f) {
+      const WindowLayout& layout = frames[f].layout;
+      const CellWindow& w = layout.window(cell->id());
+      bytes += static_cast<std::uint64_t>(w.pixel_count()) * kVideoPixelBytes;
+      if (!unit.exchange) continue;
+      for (int k = 0; k < w.pixel_count(); ++k) {
+        const ScreenPixel p = w.screen_pixel(k);
+        bytes += static_cast<std::uint64_t>(owned_corner_count(p.x, p.y, layout.width(), layout.height())) *
+                 kScreenSampleBytes;
+      }
+    }
+    if (unit.exchange) bytes += unit.exchange->needs(cell->id()).size() * kScreenSampleBytes;
+    most = std::max(most, bytes);
+  }
+  return most;
 }
 
 }  // namespace
@@ -162,7 +186,8 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   result.events = kernel.events_run();
   result.frame = host.unit_end().back();
   for (std::size_t u = 0; u < units.size(); ++u)
-    result.units.push_back({units[u].first_frame, units[u].frames, host.unit_start()[u], host.unit_end()[u]});
+    result.units.push_back({units[u].first_frame, units[u].frames, host.unit_start()[u], host.unit_end()[u],
+                            unit_video_memory(frames, units[u], cells)});
   result.breakdown = voxel_generation;
   for (const auto& cell : cells) {
     const CellRecord& r = cell->record();

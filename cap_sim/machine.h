@@ -66,7 +66,14 @@ struct UnitTimes {
   int first_frame = 0;
   int frames = 1;
   Cycles start, end;
+  // The most video memory one cell needs for the unit: every frame of the unit
+  // stays in video memory until the unit is collected, kVideoPixelBytes a
+  // pixel; antialiased, also the corner samples it traced and took in
+  // (kScreenSampleBytes each).
+  std::uint64_t video_memory_bytes = 0;
 };
+
+inline constexpr std::uint64_t kVideoPixelBytes = 3;  // 8-bit R, G, B
 
 struct SimulationResult {
   MachineConfig config;

@@ -22,6 +22,82 @@ LoadSpread load_spread(const SimulationResult& r) {
 
 namespace {
 
+LoadSpread spread_of(const std::vector<Cycles>& times) {
+  LoadSpread s;
+  if (times.empty()) return s;
+  const auto [lo, hi] = std::minmax_element(times.begin(), times.end());
+  s.min_finish = *lo;
+  s.max_finish = *hi;
+  if (s.max_finish.count() > 0)
+    s.deviation_percent = 100.0 * static_cast<double>((s.max_finish - s.min_finish).count()) /
+                          static_cast<double>(s.max_finish.count());
+  return s;
+}
+
+}  // namespace
+
+std::vector<LoadSpread> unit_spreads(const SimulationResult& r) {
+  std::vector<LoadSpread> out;
+  for (std::size_t u = 0; u < r.units.size(); ++u) {
+    std::vector<Cycles> times;
+    for (const CellReport& c : r.cells) times.push_back(c.unit_finish.at(u) - r.units[u].start);
+    out.push_back(spread_of(times));
+  }
+  return out;
+}
+
+std::vector<LoadSpread> frame_spreads(const SimulationResult& r) {
+  if (!r.config.frame_average) return unit_spreads(r);
+  std::vector<LoadSpread> out;
+  for (std::size_t f = 0; f < r.screens.size(); ++f) {
+    std::vector<Cycles> times;
+    for (const CellReport& c : r.cells) times.push_back(c.frame_busy.at(f));
+    out.push_back(spread_of(times));
+  }
+  return out;
+}
+
+double max_deviation_percent(const SimulationResult& r) {
+  double most = 0;
+  for (const LoadSpread& s : unit_spreads(r)) most = std::max(most, s.deviation_percent);
+  return most;
+}
+
+namespace {
+
+// Table 4-5's name for what the run did.
+std::string processing_name(const SimulationResult& r) {
+  const bool aa = r.config.aa.depth > 0;
+  if (r.config.frame_average) return aa ? "frame-averaged antialiasing" : "frame-averaged";
+  return aa ? "antialiasing" : "no antialiasing";
+}
+
+std::string format_sequence(const SimulationResult& r) {
+  const std::uint64_t hz = r.config.profile.clock_hz;
+  std::string out = fmt::format("\n{} frames{}\n{:>6} {:>12} {:>12} {:>8}\n", r.screens.size(),
+                                r.config.frame_average
+                                    ? fmt::format(", frame averaged in groups of {}", r.config.cells.cell_count())
+                                    : "",
+                                "frame", "Max s", "Min s", "d %");
+  const std::vector<LoadSpread> frames = frame_spreads(r);
+  for (std::size_t f = 0; f < frames.size(); ++f)
+    out += fmt::format("{:>6} {:>12.3f} {:>12.3f} {:>8.2f}\n", f, frames[f].max_finish.seconds(hz),
+                       frames[f].min_finish.seconds(hz), frames[f].deviation_percent);
+  if (r.config.frame_average) {
+    out += fmt::format("{:>6} {:>6} {:>12} {:>12} {:>8} {:>14}\n", "group", "frames", "Max s", "Min s", "d %",
+                       "video memory");
+    const std::vector<LoadSpread> units = unit_spreads(r);
+    for (std::size_t u = 0; u < units.size(); ++u)
+      out += fmt::format("{:>6} {:>6} {:>12.3f} {:>12.3f} {:>8.2f} {:>12} B\n", u, r.units[u].frames,
+                         units[u].max_finish.seconds(hz), units[u].min_finish.seconds(hz),
+                         units[u].deviation_percent, r.units[u].video_memory_bytes);
+  }
+  out += fmt::format("\nTable 4-5 form, {} frames:\n{:<30} {:>12} {:>15}\n{:<30} {:>10.3f} s {:>13.2f} %\n",
+                     r.screens.size(), "processing", "time", "max deviation", processing_name(r),
+                     r.frame.seconds(hz), max_deviation_percent(r));
+  return out;
+}
+
 constexpr CostCategory kCategories[] = {CostCategory::Intersection, CostCategory::Dda,
                                         CostCategory::Csg, CostCategory::VoxelGeneration,
                                         CostCategory::Other};
@@ -100,6 +176,7 @@ std::string format_report(const SimulationResult& r) {
   }
   out += fmt::format("  {:<22} {:>14.3f} s\n", "total", total);
   if (r.config.aa.depth > 0) out += format_antialiasing(r);
+  if (r.screens.size() > 1) out += format_sequence(r);
   return out;
 }
 
@@ -138,6 +215,49 @@ void add_antialiasing(nlohmann::json& report, const SimulationResult& r) {
                            {"max_hops", t.max_hops},
                            {"busiest_link_cycles", t.busiest.count()},
                            {"longest_wait_cycles", t.longest_wait.count()}};
+}
+
+void add_sequence(nlohmann::json& report, const SimulationResult& r) {
+  using nlohmann::json;
+  const std::uint64_t hz = r.config.profile.clock_hz;
+  auto spread_json = [&](const LoadSpread& s) {
+    return json{{"max_seconds", s.max_finish.seconds(hz)},
+                {"min_seconds", s.min_finish.seconds(hz)},
+                {"max_cycles", s.max_finish.count()},
+                {"min_cycles", s.min_finish.count()},
+                {"deviation_percent", s.deviation_percent}};
+  };
+  json frames = json::array();
+  const std::vector<LoadSpread> fs = frame_spreads(r);
+  for (std::size_t f = 0; f < fs.size(); ++f) {
+    json j = spread_json(fs[f]);
+    j["frame"] = f;
+    frames.push_back(j);
+  }
+  json units = json::array();
+  const std::vector<LoadSpread> us = unit_spreads(r);
+  for (std::size_t u = 0; u < us.size(); ++u) {
+    json j = spread_json(us[u]);
+    j["first_frame"] = r.units[u].first_frame;
+    j["frames"] = r.units[u].frames;
+    j["start_cycles"] = r.units[u].start.count();
+    j["end_cycles"] = r.units[u].end.count();
+    j["video_memory_bytes"] = r.units[u].video_memory_bytes;
+    units.push_back(j);
+  }
+  for (std::size_t i = 0; i < r.cells.size(); ++i) {
+    json busy = json::array();
+    for (Cycles c : r.cells[i].frame_busy) busy.push_back(c.count());
+    report["cells"][i]["frame_busy_cycles"] = busy;
+  }
+  report["frames"] = frames;
+  report["units"] = units;
+  report["sequence"] = {{"frames", r.screens.size()},
+                        {"frame_average", r.config.frame_average},
+                        {"processing", processing_name(r)},
+                        {"total_seconds", r.frame.seconds(hz)},
+                        {"total_cycles", r.frame.count()},
+                        {"max_deviation_percent", max_deviation_percent(r)}};
 }
 
 }  // namespace
@@ -179,6 +299,7 @@ nlohmann::json report_json(const SimulationResult& r) {
           {"breakdown_cycles", breakdown_cycles},
           {"total_cycles", r.frame.count()}};
   if (r.config.aa.depth > 0) add_antialiasing(report, r);
+  if (r.screens.size() > 1) add_sequence(report, r);
   return report;
 }
 

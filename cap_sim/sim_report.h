@@ -18,6 +18,19 @@ struct LoadSpread {
 };
 LoadSpread load_spread(const SimulationResult& r);
 
+// A run of several frames (docs/animation.md). Per frame: Max, Min and d of the
+// cells' time on it. With a barrier after each frame that is, as in Table 4-4,
+// from the frame's start to the cell's "done" reaching the host; frame
+// averaged, the frames of a group are not synchronised, and it is the cycles
+// the cell worked on the frame.
+std::vector<LoadSpread> frame_spreads(const SimulationResult& r);
+// Per distribution unit: Max, Min and d of the cells' "done" arrivals, counted
+// from the unit's start (for one frame per unit, the frames' spreads).
+std::vector<LoadSpread> unit_spreads(const SimulationResult& r);
+// Table 4-5's "max deviation": the largest d over the distribution units (the
+// frames, or the frame-averaged groups).
+double max_deviation_percent(const SimulationResult& r);
+
 // The neighbour links' traffic over a frame (antialiasing's corner exchange).
 struct LinkTotals {
   std::uint64_t messages = 0, bytes = 0;

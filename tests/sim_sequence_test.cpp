@@ -1,0 +1,175 @@
+// Runs of several frames: the frame-averaged dot patterns, the barrier between
+// frames, the groups of frame averaging, and determinism.
+
+#include "machine.h"
+#include "sim_report.h"
+#include "scene_builders.h"
+
+#include "capsim/render.h"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <memory>
+#include <set>
+#include <string>
+
+namespace capsim::sim {
+namespace {
+
+TEST(FrameAveraging, EveryCellOwnsEveryPositionOnceInAnyRxCConsecutiveFrames) {
+  for (const CellGrid grid : {CellGrid{1, 1}, CellGrid{2, 3}, CellGrid{3, 5}, CellGrid{8, 8}, CellGrid{4, 1}}) {
+    const int n = grid.cell_count();
+    for (int first : {0, 1, n - 1, n + 2}) {
+      for (CellId c = 0; c < n; ++c) {
+        std::set<std::pair<int, int>> positions;
+        for (int f = first; f < first + n; ++f) {
+          MachineConfig config;
+          config.cells = grid;
+          config.frame_average = true;
+          const WindowLayout layout = frame_layout(config, 2 * grid.cols, 2 * grid.rows, f);
+          const ScreenPixel p = layout.window(c).screen_pixel(0);  // its position in the first square
+          positions.insert({p.y % grid.rows, p.x % grid.cols});
+        }
+        EXPECT_EQ(static_cast<int>(positions.size()), n)
+            << to_string(grid) << " cell " << c << " frames " << first << " on";
+      }
+    }
+  }
+}
+
+TEST(FrameAveraging, ShiftedLayoutsGiveEveryPixelOneOwnerAndInvertTheirWindows) {
+  for (const CellGrid grid : {CellGrid{2, 3}, CellGrid{3, 5}, CellGrid{4, 4}})
+    for (int f = 0; f < grid.cell_count(); ++f)
+      for (const auto& [w, h] : {std::pair{13, 11}, std::pair{2, 1}, std::pair{16, 16}}) {
+        const WindowLayout layout(PixelMode::Dot, grid, w, h, dot_shift_for_frame(grid, f));
+        std::vector<int> seen(static_cast<std::size_t>(w) * h, 0);
+        for (CellId c = 0; c < grid.cell_count(); ++c)
+          for (int k = 0; k < layout.window(c).pixel_count(); ++k) {
+            const ScreenPixel p = layout.window(c).screen_pixel(k);
+            ASSERT_TRUE(p.x < w && p.y < h);
+            ++seen[static_cast<std::size_t>(p.y) * w + p.x];
+            ASSERT_EQ(layout.owner(p), (PixelOwner{c, k})) << to_string(grid) << " frame " << f;
+          }
+        for (int s : seen) ASSERT_EQ(s, 1) << to_string(grid) << " frame " << f;
+      }
+}
+
+// Frame k: a row of spheres and boxes that has moved k steps to the right.
+PreparedScene moving_frame(int k, int width, int height) {
+  std::vector<Primitive> prims;
+  for (int i = 0; i < 6; ++i) prims.push_back(testing::sphere({i * 1.5 + 0.4 * k, 0, 0}, 0.6));
+  for (int i = 0; i < 4; ++i) prims.push_back(testing::box({i * 2.0 + 0.4 * k, -1, -1.8}, {1, 1, 0.6}));
+  Scene s = testing::make_scene(prims);
+  Camera cam;
+  cam.eye = {4, -14, 6};
+  cam.center = {4, 0, 0};
+  cam.up = {0, 0, 1};
+  cam.fov_deg = 45;
+  s.camera = cam;
+  PrepareOptions o;
+  o.width = width;
+  o.height = height;
+  return prepare_scene(s, o);
+}
+
+struct Frames {
+  std::vector<PreparedScene> scenes;
+  std::vector<std::unique_ptr<Tracer>> tracers;
+  std::vector<const Tracer*> list;
+  Frames(int count, int width, int height) {
+    for (int k = 0; k < count; ++k) scenes.push_back(moving_frame(k, width, height));
+    for (const PreparedScene& s : scenes) tracers.push_back(std::make_unique<Tracer>(s, TraceOptions{}));
+    for (const auto& t : tracers) list.push_back(t.get());
+  }
+};
+
+MachineConfig config_of(CellGrid grid, int aa, bool average) {
+  MachineConfig c;
+  c.cells = grid;
+  c.mode = PixelMode::Dot;
+  c.profile = load_cost_profile("cap");
+  c.aa = {aa, 0.3};
+  c.frame_average = average;
+  return c;
+}
+
+TEST(Sequence, WithABarrierEachFrameTakesItsOwnRunLessTheProgramBroadcast) {
+  const Frames frames(3, 40, 30);
+  const MachineConfig config = config_of({4, 4}, 0, false);
+  const SimulationResult run = simulate_frames(frames.list, config, 2, false);
+  ASSERT_EQ(run.units.size(), 3u);
+  const CostProfile& p = config.profile;
+  const Cycles program = p.bus.arbitration + p.bus_data_cycles(p.program_bytes) + p.bus.latency;
+  Cycles start;
+  for (int k = 0; k < 3; ++k) {
+    const SimulationResult alone = simulate_frame(*frames.list[k], config, 2, false);
+    EXPECT_EQ(run.units[k].start, start) << k;
+    EXPECT_EQ(run.units[k].end - run.units[k].start, k == 0 ? alone.frame : alone.frame - program) << k;
+    if (k == 0) EXPECT_EQ(frame_spreads(run)[0].deviation_percent, load_spread(alone).deviation_percent);
+    start = run.units[k].end;
+  }
+  EXPECT_EQ(run.frame, run.units.back().end);
+}
+
+TEST(Sequence, FrameAveragedScreensAreTheRenderedFrames) {
+  const Frames frames(5, 23, 17);
+  for (int aa : {0, 1}) {
+    const SimulationResult run = simulate_frames(frames.list, config_of({2, 3}, aa, true), 2, false);
+    ASSERT_EQ(run.screens.size(), 5u);
+    ASSERT_EQ(run.units.size(), 1u);  // a group of 6 frames holds all 5
+    for (int k = 0; k < 5; ++k) {
+      const Framebuffer rendered = render(*frames.list[k], 2, nullptr, nullptr, {aa, 0.3});
+      EXPECT_EQ(0, std::memcmp(rendered.rgba.data(), run.screens[k].screen.rgba.data(),
+                               rendered.rgba.size() * sizeof(float)))
+          << "frame " << k << " aa " << aa;
+    }
+  }
+}
+
+TEST(Sequence, FrameAveragingGroupsRxCFramesAndEvensTheLoad) {
+  // Antialiasing puts the work on the moving edges. With a barrier per frame
+  // every frame's slowest cell counts; averaged over a group with the pattern
+  // turned, each cell's total is nearly the mean.
+  const Frames frames(8, 48, 32);
+  const SimulationResult plain = simulate_frames(frames.list, config_of({2, 2}, 1, false), 2, false);
+  const SimulationResult averaged = simulate_frames(frames.list, config_of({2, 2}, 1, true), 2, false);
+  ASSERT_EQ(averaged.units.size(), 2u);
+  EXPECT_EQ(averaged.units[0].frames, 4);
+  EXPECT_EQ(averaged.units[1].first_frame, 4);
+  EXPECT_LT(averaged.frame, plain.frame);
+  EXPECT_LT(max_deviation_percent(averaged), max_deviation_percent(plain));
+  // The same pixels and rays in all, however they were distributed.
+  std::uint64_t rays_plain = 0, rays_averaged = 0;
+  for (const CellReport& c : plain.cells) rays_plain += c.rays;
+  for (const CellReport& c : averaged.cells) rays_averaged += c.rays;
+  EXPECT_EQ(rays_plain, rays_averaged);
+  EXPECT_GT(averaged.units[0].video_memory_bytes, 4u * (48 * 32 / 4) * kVideoPixelBytes);
+}
+
+TEST(Sequence, ReportsAndTracesDoNotDependOnHostThreads) {
+  const Frames frames(4, 32, 24);
+  for (bool average : {false, true}) {
+    const MachineConfig config = config_of({2, 2}, 1, average);
+    const SimulationResult one = simulate_frames(frames.list, config, 1, false);
+    const SimulationResult two = simulate_frames(frames.list, config, 2, false);
+    EXPECT_EQ(report_json(one).dump(), report_json(two).dump());
+    EXPECT_EQ(format_report(one), format_report(two));
+    EXPECT_EQ(one.timeline.to_chrome_trace("t", 8'000'000).dump(),
+              two.timeline.to_chrome_trace("t", 8'000'000).dump());
+    const nlohmann::json report = report_json(one);
+    EXPECT_EQ(report["frames"].size(), 4u);
+    EXPECT_EQ(report["sequence"]["frame_average"], average);
+    EXPECT_NE(format_report(one).find("Table 4-5 form, 4 frames"), std::string::npos);
+  }
+}
+
+TEST(Sequence, FrameAveragingNeedsDotMode) {
+  const Frames frames(2, 8, 8);
+  MachineConfig config = config_of({2, 2}, 0, true);
+  config.mode = PixelMode::Line;
+  EXPECT_THROW(simulate_frames(frames.list, config, 1, false), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace capsim::sim
