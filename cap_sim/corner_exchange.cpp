@@ -49,9 +49,10 @@ CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int firs
     const WindowLayout& layout = *frames_[f];
     if (layout.width() != width_ || layout.height() != height_ || !(layout.grid() == grid))
       throw std::logic_error("the frames of one exchange need one screen size and cell grid");
+    const OwnerTable owners(layout);
     for (int y = 0; y < height_; ++y)
       for (int x = 0; x < width_; ++x) {
-        const CellId n = layout.owner({x, y}).cell;
+        const CellId n = owners.owner(x, y).cell;
         const int corner_xy[3][2] = {{x + 1, y}, {x, y + 1}, {x + 1, y + 1}};
         for (const auto& [cx, cy] : corner_xy) {
           const CornerIndex c = index(first_frame_ + static_cast<int>(f), cx, cy);

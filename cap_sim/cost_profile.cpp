@@ -211,14 +211,16 @@ const char* json_key(CostCategory c) {
   return "?";
 }
 
-CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& c) {
+CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& c) { return work_cost(ops, 1, c); }
+
+CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& c) {
   CostBreakdown b;
   b[CostCategory::Intersection] =
       ops.sphere_tests * c.sphere_test + ops.cone_tests * c.cone_test + ops.box_tests * c.box_test;
   b[CostCategory::Dda] = ops.dda_setups * c.dda_setup + ops.dda_steps * c.dda_step;
   b[CostCategory::Csg] = ops.tree_visits * c.tree_visit + ops.hits_sorted * c.hit_sort;
   b[CostCategory::Other] = ops.matvec * c.matvec + ops.shading_evals * c.shading_eval +
-                           ops.rays * c.ray_other + ops.aa_squares * c.aa_square + c.pixel_write;
+                           ops.rays * c.ray_other + ops.aa_squares * c.aa_square + pixels * c.pixel_write;
   return b;
 }
 

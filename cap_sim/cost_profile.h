@@ -111,6 +111,11 @@ struct CostBreakdown {
 // per-ray fixed work for every ray, and one video-memory write.
 CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& costs);
 
+// pixel_cost summed over `pixels` pixels whose operations add up to `ops` (it is
+// linear in the counts, with one pixel_write a pixel): the same cycles, without
+// a conversion per pixel.
+CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& costs);
+
 // The host's cycles for Algorithm-3 (all in CostCategory::VoxelGeneration).
 CostBreakdown voxel_generation_cost(const VoxelGenCounts& counts, const HostCosts& costs);
 

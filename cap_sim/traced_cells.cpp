@@ -14,13 +14,28 @@ namespace capsim::sim {
 
 namespace {
 
-// Per-cell sums kept per host thread and added at the end: integer sums, so the
-// totals do not depend on how rows were spread over threads.
+// Per-cell operation counts kept per host thread and added at the end: integer
+// sums, so the totals do not depend on how rows were spread over threads. A
+// cell's cycles come from its summed counts (work_cost), not pixel by pixel.
 struct Sums {
-  std::vector<CostBreakdown> work;
-  std::vector<std::uint64_t> rays;
-  explicit Sums(int cells) : work(cells), rays(cells, 0) {}
+  std::vector<OpCounts> ops;
+  std::vector<std::uint64_t> items;  // pixels or corner samples written
+  explicit Sums(int cells) : ops(cells), items(cells, 0) {}
 };
+
+// Adds the per-thread sums into the cells: the work of `items` items whose
+// operations add up to ops.
+template <class Add>
+void fold(const tbb::enumerable_thread_specific<Sums>& sums, int cell_count, const CellCosts& costs, Add add) {
+  std::vector<OpCounts> ops(cell_count);
+  std::vector<std::uint64_t> items(cell_count, 0);
+  for (const Sums& sum : sums)
+    for (CellId c = 0; c < cell_count; ++c) {
+      ops[c] += sum.ops[c];
+      items[c] += sum.items[c];
+    }
+  for (CellId c = 0; c < cell_count; ++c) add(c, work_cost(ops[c], items[c], costs), ops[c].rays);
+}
 
 // Video memories of the right size and format for every cell.
 std::vector<TracedCell> empty_cells(const WindowLayout& layout, ScreenFormat format, bool antialiased) {
@@ -46,6 +61,15 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
     cell.samples.set(k, 0, px);
 }
 
+// Runs body(rows) over the screen's rows on `threads` host threads.
+template <class Body>
+void parallel_rows(int threads, int count, Body body) {
+  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
+  });
+}
+
 // Antialiased: every corner sample traced and charged to the cell that owns it
 // (phase 1), then every pixel resolved from its corners and charged to its
 // cell (phase 3).
@@ -55,69 +79,63 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
                                                 ScreenFormat format) {
   const int cell_count = layout.grid().cell_count();
   const int width = layout.width(), height = layout.height();
+  const bool floats = format == ScreenFormat::Float;
   std::vector<TracedCell> cells = empty_cells(layout, format, true);
-  auto owner = [&](int x, int y) { return layout.owner({std::min(x, width - 1), std::min(y, height - 1)}); };
+  const OwnerTable owners(layout);
+  auto owner = [&](int x, int y) { return owners.owner(std::min(x, width - 1), std::min(y, height - 1)); };
 
-  // Phase 1: each corner's cycles, kept per corner until they are folded into
-  // the pixel that owns it (a bottom-row pixel owns corners of two rows, which
-  // different threads may trace at once).
-  std::vector<std::uint64_t> corner_cycles(static_cast<std::size_t>(width + 1) * (height + 1));
+  // Phase 1. With a float screen each corner's cycles are kept until they are
+  // folded into the pixel that owns it (a bottom-row pixel owns corners of two
+  // rows, which different threads may trace at once).
+  std::vector<std::uint64_t> corner_cycles(floats ? static_cast<std::size_t>(width + 1) * (height + 1) : 0);
   tbb::enumerable_thread_specific<Sums> corner_sums([&] { return Sums(cell_count); });
   const CornerSamples corners = trace_corners(
       tracer, threads,
       [&](int x, int y, const OpCounts& ops) {
-        const CostBreakdown cost = pixel_cost(ops, costs);
-        corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = cost.total().count();
         Sums& sum = corner_sums.local();
         const CellId c = owner(x, y).cell;
-        sum.work[c] += cost;
-        sum.rays[c] += ops.rays;
+        sum.ops[c] += ops;
+        ++sum.items[c];
+        if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = pixel_cost(ops, costs).total().count();
       },
       progress);
 
   // Phase 3.
   tbb::enumerable_thread_specific<Sums> pixel_sums([&] { return Sums(cell_count); });
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-      Tracer::Scratch& s = scratch.local();
-      Sums& sum = pixel_sums.local();
-      for (int y = rows.begin(); y != rows.end(); ++y)
-        for (int x = 0; x < width; ++x) {
-          const PixelOwner own = layout.owner({x, y});
-          const ScreenSample c[4] = {corners.at(x, y), corners.at(x + 1, y), corners.at(x, y + 1),
-                                     corners.at(x + 1, y + 1)};
-          OpCounts ops;
-          const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, ops);
-          const CostBreakdown cost = pixel_cost(ops, costs);
-          std::uint64_t owned = corner_cycles[corners.index(x, y)];
-          if (x == width - 1) owned += corner_cycles[corners.index(x + 1, y)];
-          if (y == height - 1) owned += corner_cycles[corners.index(x, y + 1)];
-          if (x == width - 1 && y == height - 1) owned += corner_cycles[corners.index(x + 1, y + 1)];
-          TracedCell& out = cells[own.cell];
-          store(out, own.video_index, px.value, format);
-          if (format == ScreenFormat::Float) {
-            out.pixel_cycles[own.video_index] = owned + cost.total().count();
-            out.pixel_samples[own.video_index] =
-                static_cast<std::uint32_t>(owned_corner_count(x, y, width, height) + px.subdivision_samples);
-          }
-          sum.work[own.cell] += cost;
-          sum.rays[own.cell] += ops.rays;
-        }
-      if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * width);
-    });
+  parallel_rows(threads, height, [&](const tbb::blocked_range<int>& rows) {
+    Tracer::Scratch& s = scratch.local();
+    Sums& sum = pixel_sums.local();
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < width; ++x) {
+        const PixelOwner own = owners.owner(x, y);
+        const ScreenSample c[4] = {corners.at(x, y), corners.at(x + 1, y), corners.at(x, y + 1),
+                                   corners.at(x + 1, y + 1)};
+        OpCounts ops;
+        const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, ops);
+        TracedCell& out = cells[own.cell];
+        store(out, own.video_index, px.value, format);
+        sum.ops[own.cell] += ops;
+        ++sum.items[own.cell];
+        if (!floats) continue;
+        std::uint64_t owned = corner_cycles[corners.index(x, y)];
+        if (x == width - 1) owned += corner_cycles[corners.index(x + 1, y)];
+        if (y == height - 1) owned += corner_cycles[corners.index(x, y + 1)];
+        if (x == width - 1 && y == height - 1) owned += corner_cycles[corners.index(x + 1, y + 1)];
+        out.pixel_cycles[own.video_index] = owned + pixel_cost(ops, costs).total().count();
+        out.pixel_samples[own.video_index] =
+            static_cast<std::uint32_t>(owned_corner_count(x, y, width, height) + px.subdivision_samples);
+      }
+    if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * width);
   });
-  for (const Sums& sum : corner_sums)
-    for (CellId c = 0; c < cell_count; ++c) {
-      cells[c].corner_work += sum.work[c];
-      cells[c].rays += sum.rays[c];
-    }
-  for (const Sums& sum : pixel_sums)
-    for (CellId c = 0; c < cell_count; ++c) {
-      cells[c].subdivision_work += sum.work[c];
-      cells[c].rays += sum.rays[c];
-    }
+  fold(corner_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+    cells[c].corner_work = work;
+    cells[c].rays += rays;
+  });
+  fold(pixel_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+    cells[c].subdivision_work = work;
+    cells[c].rays += rays;
+  });
   for (TracedCell& c : cells) {
     c.work = c.corner_work;
     c.work += c.subdivision_work;
@@ -132,39 +150,38 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
                                     const AntialiasOptions& aa, ScreenFormat format) {
   if (aa.depth > 0) return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format);
   const int cell_count = layout.grid().cell_count();
+  const bool floats = format == ScreenFormat::Float;
   std::vector<TracedCell> cells = empty_cells(layout, format, false);
+  const OwnerTable owners(layout);
   // Pixels are traced in screen order, row by row as `capsim render` traces
   // them (neighbouring rays share voxels and primitives in the caches), and each
   // sample goes to the video-memory slot of the cell whose window shows it.
   tbb::enumerable_thread_specific<Sums> sums([&] { return Sums(cell_count); });
-  tbb::enumerable_thread_specific<Tracer::Scratch> scratch(
-      [&] { return Tracer::Scratch(tracer.scene()); });
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, layout.height()), [&](const tbb::blocked_range<int>& rows) {
-      Tracer::Scratch& s = scratch.local();
-      Sums& sum = sums.local();
-      for (int y = rows.begin(); y != rows.end(); ++y) {
-        for (int x = 0; x < layout.width(); ++x) {
-          const PixelOwner owner = layout.owner({x, y});
-          OpCounts ops;
-          const PixelSample px = tracer.trace_pixel(x, y, s, ops);
-          TracedCell& out = cells[owner.cell];
-          store(out, owner.video_index, px, format);
-          const CostBreakdown cost = pixel_cost(ops, costs);
-          if (format == ScreenFormat::Float) out.pixel_cycles[owner.video_index] = cost.total().count();
-          sum.work[owner.cell] += cost;
-          sum.rays[owner.cell] += ops.rays;
+  tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
+  parallel_rows(threads, layout.height(), [&](const tbb::blocked_range<int>& rows) {
+    Tracer::Scratch& s = scratch.local();
+    Sums& sum = sums.local();
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < layout.width(); ++x) {
+        const PixelOwner owner = owners.owner(x, y);
+        TracedCell& out = cells[owner.cell];
+        ++sum.items[owner.cell];
+        if (!floats) {
+          // trace_pixel adds its operations to the cell's sum directly.
+          store(out, owner.video_index, tracer.trace_pixel(x, y, s, sum.ops[owner.cell]), format);
+          continue;
         }
+        OpCounts ops;
+        store(out, owner.video_index, tracer.trace_pixel(x, y, s, ops), format);
+        out.pixel_cycles[owner.video_index] = pixel_cost(ops, costs).total().count();
+        sum.ops[owner.cell] += ops;
       }
-      if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
-    });
+    if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
   });
-  for (const Sums& sum : sums)
-    for (CellId c = 0; c < cell_count; ++c) {
-      cells[c].work += sum.work[c];
-      cells[c].rays += sum.rays[c];
-    }
+  fold(sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+    cells[c].work = work;
+    cells[c].rays = rays;
+  });
   return cells;
 }
 

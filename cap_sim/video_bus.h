@@ -21,10 +21,13 @@ namespace capsim::sim {
 template <class Put>
 void for_each_window_pixel(const WindowLayout& layout, Put put) {
   tbb::parallel_for(0, layout.grid().cell_count(), [&](CellId c) {
-    const CellWindow& window = layout.window(c);
-    for (int k = 0; k < window.pixel_count(); ++k) {
-      const ScreenPixel p = window.screen_pixel(k);
-      put(c, k, static_cast<std::size_t>(p.y) * layout.width() + p.x);
+    // Row by row through the window: the same pixels in the same order as
+    // screen_pixel(k) for k = 0, 1, ..., without a division per pixel.
+    const CellWindow& w = layout.window(c);
+    int k = 0;
+    for (int r = 0; r < w.rows(); ++r) {
+      std::size_t s = static_cast<std::size_t>(w.origin_y() + r * w.stride_y()) * layout.width() + w.origin_x();
+      for (int col = 0; col < w.columns(); ++col, ++k, s += static_cast<std::size_t>(w.stride_x())) put(c, k, s);
     }
   });
 }

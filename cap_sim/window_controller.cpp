@@ -113,4 +113,55 @@ PixelOwner WindowLayout::owner(ScreenPixel s) const {
   throw std::logic_error("unknown pixel mode");
 }
 
+OwnerTable::OwnerTable(const WindowLayout& layout)
+    : row_cell_(layout.height()),
+      row_step_(layout.height()),
+      col_cell_(layout.width()),
+      col_step_(layout.width()),
+      col_index_(layout.width()) {
+  const CellGrid& g = layout.grid();
+  const int w = layout.width(), h = layout.height();
+  switch (layout.mode()) {
+    case PixelMode::Block:
+      // index = (y - y0) * (x1 - x0) + (x - x0)
+      for (int y = 0; y < h; ++y) {
+        const int row = split_part(y, h, g.rows);
+        row_cell_[y] = row * g.cols;
+        row_step_[y] = y - split_start(row, h, g.rows);
+      }
+      for (int x = 0; x < w; ++x) {
+        const int col = split_part(x, w, g.cols);
+        const int x0 = split_start(col, w, g.cols);
+        col_cell_[x] = col;
+        col_step_[x] = split_start(col + 1, w, g.cols) - x0;
+        col_index_[x] = x - x0;
+      }
+      break;
+    case PixelMode::Line:
+      // cell = y mod RC, index = (y / RC) * W + x
+      for (int y = 0; y < h; ++y) {
+        row_cell_[y] = y % g.cell_count();
+        row_step_[y] = y / g.cell_count();
+      }
+      for (int x = 0; x < w; ++x) {
+        col_cell_[x] = 0;
+        col_step_[x] = w;
+        col_index_[x] = x;
+      }
+      break;
+    case PixelMode::Dot:
+      // index = (y / R) * (pixels of the window's row) + x / C
+      for (int y = 0; y < h; ++y) {
+        row_cell_[y] = (y % g.rows - layout.shift().rows + g.rows) % g.rows * g.cols;
+        row_step_[y] = y / g.rows;
+      }
+      for (int x = 0; x < w; ++x) {
+        col_cell_[x] = (x % g.cols - layout.shift().cols + g.cols) % g.cols;
+        col_step_[x] = strided_count(w, x % g.cols, g.cols);
+        col_index_[x] = x / g.cols;
+      }
+      break;
+  }
+}
+
 }  // namespace capsim::sim

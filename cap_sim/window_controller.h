@@ -40,6 +40,10 @@ class CellWindow {
   int pixel_count() const { return columns_ * rows_; }
   int columns() const { return columns_; }
   int rows() const { return rows_; }
+  int origin_x() const { return origin_x_; }
+  int origin_y() const { return origin_y_; }
+  int stride_x() const { return stride_x_; }
+  int stride_y() const { return stride_y_; }
   // Precondition: 0 <= k < pixel_count().
   ScreenPixel screen_pixel(int k) const {
     return {origin_x_ + (k % columns_) * stride_x_, origin_y_ + (k / columns_) * stride_y_};
@@ -89,11 +93,28 @@ class WindowLayout {
   int height() const { return height_; }
 
  private:
+  friend class OwnerTable;
   PixelMode mode_;
   CellGrid grid_;
   DotShift shift_;
   int width_, height_;
   std::vector<CellWindow> windows_;
+};
+
+// WindowLayout::owner for every pixel of the screen at a few operations each,
+// for the loops that visit every pixel. In every mode the owner splits into a
+// part of the row and a part of the column:
+//   cell = row_cell[y] + col_cell[x],  video index = row_step[y] * col_step[x] + col_index[x].
+class OwnerTable {
+ public:
+  explicit OwnerTable(const WindowLayout& layout);
+  PixelOwner owner(int x, int y) const {
+    return {row_cell_[y] + col_cell_[x], row_step_[y] * col_step_[x] + col_index_[x]};
+  }
+
+ private:
+  std::vector<int> row_cell_, row_step_;
+  std::vector<int> col_cell_, col_step_, col_index_;
 };
 
 }  // namespace capsim::sim

@@ -140,5 +140,22 @@ TEST(VideoBus, RefusesAVideoMemoryOfTheWrongSize) {
   }
 }
 
+TEST(WindowController, OwnerTableAgreesWithOwnerEverywhere) {
+  for (PixelMode mode : {PixelMode::Block, PixelMode::Line, PixelMode::Dot})
+    for (int rows = 1; rows <= 4; ++rows)
+      for (int cols = 1; cols <= 5; ++cols)
+        for (const auto& [w, h] : {std::pair{1, 1}, std::pair{13, 7}, std::pair{20, 24}}) {
+          const CellGrid grid{rows, cols};
+          for (int shift = 0; shift < (mode == PixelMode::Dot ? grid.cell_count() : 1); ++shift) {
+            const WindowLayout layout(mode, grid, w, h, mode == PixelMode::Dot ? dot_shift_for_frame(grid, shift) : DotShift{});
+            const OwnerTable table(layout);
+            for (int y = 0; y < h; ++y)
+              for (int x = 0; x < w; ++x)
+                ASSERT_EQ(table.owner(x, y), layout.owner({x, y}))
+                    << to_string(mode) << " " << to_string(grid) << " shift " << shift << " at " << x << "," << y;
+          }
+        }
+}
+
 }  // namespace
 }  // namespace capsim::sim
