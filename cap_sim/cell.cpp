@@ -36,7 +36,11 @@ Process Cell::run_frame() {
   // host threads traced them ahead; nothing reaches a cell while it traces, so
   // its clock advances once by their sum (the same time as pixel by pixel,
   // without an event per pixel) and its video memory takes them all at the end.
-  co_await wire_.kernel.delay(traced_.work.total());
+  try {
+    co_await wire_.kernel.delay(traced_.work.total());
+  } catch (const CycleOverflow& e) {
+    throw e.inside(fmt::format("{}'s tracing", wire_.timeline.tracks().at(track_)));
+  }
   video_memory_ = std::move(traced_.samples);
   record_.work = traced_.work;
   record_.rays = traced_.rays;

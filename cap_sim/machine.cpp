@@ -16,7 +16,9 @@
 namespace capsim::sim {
 
 void check_cell_memory(const SceneFootprint& f, const CostProfile& profile) {
-  const std::uint64_t needed = profile.program_bytes + f.scene_bytes() + f.voxel_bytes();
+  // 128 bits: the sum of three 64-bit sizes cannot wrap.
+  const unsigned __int128 needed = static_cast<unsigned __int128>(profile.program_bytes) +
+                                   f.scene_bytes() + f.voxel_bytes();
   if (needed > profile.cell_memory_bytes)
     throw std::runtime_error(fmt::format(
         "the scene does not fit a cell's memory: it needs {} bytes (program {} + scene {} + voxel "
@@ -44,7 +46,12 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
   result.footprint = scene_footprint(scene);
   check_cell_memory(result.footprint, profile);
 
-  const CostBreakdown voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.host);
+  CostBreakdown voxel_generation;
+  try {
+    voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.host);
+  } catch (const CycleOverflow& e) {
+    throw e.inside("the host's voxel generation");
+  }
 
   EventKernel kernel;
   CommandBus bus(kernel, profile);
@@ -99,9 +106,18 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     c.finish = r.finish;
     c.idle = r.finish - r.busy - r.comm;
     c.work = r.work;
-    result.breakdown += r.work;
+    try {
+      result.breakdown += r.work;
+    } catch (const CycleOverflow& e) {
+      throw e.inside("all cells' work and the host's voxel generation, by process");
+    }
     result.cells.push_back(c);
     video.push_back(&cell->video_memory());
+  }
+  try {
+    (void)result.breakdown.total();  // the reports print it: refuse now, before any output
+  } catch (const CycleOverflow& e) {
+    throw e.inside("all cells' work and the host's voxel generation, in total");
   }
   result.screen = compose_screen(layout, video);
 
@@ -115,17 +131,23 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
                                 bool show_progress) {
   const Camera& cam = tracer.scene().camera;
+  const CostProfile& profile = config.profile;
   // Refuse a scene that does not fit before spending time tracing it.
-  check_cell_memory(scene_footprint(tracer.scene()), config.profile);
+  check_cell_memory(scene_footprint(tracer.scene()), profile);
   const WindowLayout layout(config.mode, config.cells, cam.width, cam.height);
-  std::vector<TracedCell> traced;
-  {
-    Progress progress("tracing", static_cast<std::uint64_t>(cam.width) * cam.height, show_progress);
-    traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress);
+  try {
+    std::vector<TracedCell> traced;
+    {
+      Progress progress("tracing", static_cast<std::uint64_t>(cam.width) * cam.height, show_progress);
+      traced = trace_cells(tracer, layout, profile.cell, threads, &progress);
+    }
+    // The event loop is serial; composing the screen uses the same host threads.
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    return arena.execute([&] { return run_frame(tracer.scene(), layout, std::move(traced), config); });
+  } catch (const CycleOverflow& e) {
+    // The scene is valid; the profile's costs make its time too long to count.
+    throw e.of_profile(profile.source.empty() ? profile.name : profile.source, profile.clock_hz);
   }
-  // The event loop is serial; composing the screen uses the same host threads.
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-  return arena.execute([&] { return run_frame(tracer.scene(), layout, std::move(traced), config); });
 }
 
 }  // namespace capsim::sim

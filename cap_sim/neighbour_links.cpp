@@ -1,5 +1,7 @@
 #include "neighbour_links.h"
 
+#include <fmt/core.h>
+
 #include <stdexcept>
 
 namespace capsim::sim {
@@ -56,9 +58,16 @@ Cycles NeighbourLinks::forward(LinkMessage m, CellId at) {
                                       : Direction::North;
   Cycles& free_at = link_free_at_[static_cast<std::size_t>(at) * 4 + static_cast<int>(d)];
   const Cycles start = std::max(kernel_.now(), free_at);
-  const Cycles last_bit = start + profile_.link_data_cycles(m.bytes);
+  Cycles last_bit, delivered;
+  try {
+    last_bit = start + profile_.link_data_cycles(m.bytes);
+    delivered = last_bit + profile_.link.latency;
+  } catch (const CycleOverflow& e) {
+    throw e.inside(fmt::format("link message \"{}\" sent from cell {} at cycle {}", m.label, at,
+                               start.count()));
+  }
   free_at = last_bit;
-  kernel_.schedule(last_bit + profile_.link.latency, EventPriority::Delivery,
+  kernel_.schedule(delivered, EventPriority::Delivery,
                    [this, m = std::move(m), next]() mutable {
                      ++m.hops;
                      if (next != m.to) {
