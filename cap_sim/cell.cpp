@@ -62,7 +62,11 @@ Process Cell::run() {
       // (the same time as pixel by pixel, without an event per pixel).
       for (int f = first; f < end; ++f) {
         const Cycles begin = wire_.kernel.now();
-        co_await wire_.kernel.delay(video_[f].work.total());
+        try {
+          co_await wire_.kernel.delay(video_[f].work.total());
+        } catch (const CycleOverflow& e) {
+          throw e.inside(fmt::format("{}'s tracing", cell_name(id_)));
+        }
         record_.frame_busy[f] = video_[f].work.total();
         wire_.timeline.span(
             track_, frame_name(fmt::format("trace {} pixels", wire_.frames[f].layout.window(id_).pixel_count()), f),
@@ -77,7 +81,11 @@ Process Cell::run() {
       // into video memory.
       for (int f = first; f < end; ++f) {
         const Cycles begin = wire_.kernel.now();
-        co_await wire_.kernel.delay(video_[f].corner_work.total());
+        try {
+          co_await wire_.kernel.delay(video_[f].corner_work.total());
+        } catch (const CycleOverflow& e) {
+          throw e.inside(fmt::format("{}'s corner tracing", cell_name(id_)));
+        }
         wire_.timeline.span(track_, frame_name("trace corners", f), "compute", begin, wire_.kernel.now());
       }
       record_.trace_corners += wire_.kernel.now() - started;
@@ -126,7 +134,11 @@ Process Cell::run() {
       const Cycles subdivide_start = wire_.kernel.now();
       for (int f = first; f < end; ++f) {
         const Cycles begin = wire_.kernel.now();
-        co_await wire_.kernel.delay(video_[f].subdivision_work.total());
+        try {
+          co_await wire_.kernel.delay(video_[f].subdivision_work.total());
+        } catch (const CycleOverflow& e) {
+          throw e.inside(fmt::format("{}'s subdivision", cell_name(id_)));
+        }
         record_.frame_busy[f] = video_[f].work.total();
         wire_.timeline.span(
             track_,

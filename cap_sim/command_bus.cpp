@@ -1,5 +1,7 @@
 #include "command_bus.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -56,8 +58,12 @@ void CommandBus::arbitrate() {
   BusTransfer& t = *r.transfer;
   busy_ = true;
   t.granted = kernel_.now();
-  t.released = t.granted + arbitration_ + profile_.bus_data_cycles(t.bytes);
-  t.delivered = t.released + latency_;
+  try {
+    t.released = t.granted + arbitration_ + profile_.bus_data_cycles(t.bytes);
+    t.delivered = t.released + latency_;
+  } catch (const CycleOverflow& e) {
+    throw e.inside(fmt::format("bus transfer \"{}\" granted at cycle {}", t.label, t.granted.count()));
+  }
 
   kernel_.schedule(t.released, EventPriority::Arbitration, [this] {
     busy_ = false;

@@ -18,6 +18,8 @@ namespace {
 
 using nlohmann::json;
 
+constexpr double kTwoTo64 = 18446744073709551616.0;  // Cycles::kMax + 1, exact in a double
+
 // Reads one JSON object, refusing unknown and missing keys (a misspelt key is an
 // error, never a silent default).
 class ObjectReader {
@@ -40,6 +42,19 @@ class ObjectReader {
     const double d = v.get<double>();
     if (!std::isfinite(d) || d < min) fail(where(key), fmt::format("must be at least {}", min));
     return d;
+  }
+
+  // A time in microseconds ("..._us") as whole cycles at clock_hz, rounded to
+  // nearest; refused when a 64-bit cycle count cannot hold it.
+  Cycles cycles(const std::string& key, std::uint64_t clock_hz) {
+    const double us = number(key, 0);
+    const double hz = static_cast<double>(clock_hz);
+    const double cycles = std::round(us * hz / 1e6);
+    if (!(cycles < kTwoTo64))
+      fail(where(key), fmt::format("= {} us is {:.4g} cycles at clock_hz {}, more than a 64-bit "
+                                   "cycle count holds ({} cycles, {:.6g} us at this clock)",
+                                   us, cycles, clock_hz, Cycles::kMax, kTwoTo64 / hz * 1e6));
+    return Cycles(static_cast<std::uint64_t>(cycles));
   }
 
   std::uint64_t count(const std::string& key) {
@@ -78,25 +93,53 @@ class ObjectReader {
   std::set<std::string> seen_;
 };
 
-// Microseconds -> whole cycles at clock_hz, rounded to nearest.
-Cycles us_to_cycles(double us, std::uint64_t clock_hz) {
-  return Cycles(static_cast<std::uint64_t>(std::llround(us * static_cast<double>(clock_hz) / 1e6)));
+// ceil(a * b / c), or nothing when it exceeds 2^64 - 1. Exact: the product of
+// two 64-bit numbers fits 128 bits.
+std::optional<std::uint64_t> ceil_mul_div(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+  const unsigned __int128 p = static_cast<unsigned __int128>(a) * b;
+  const unsigned __int128 q = p / c + (p % c != 0);
+  if (q > Cycles::kMax) return std::nullopt;
+  return static_cast<std::uint64_t>(q);
 }
 
-// ceil(a * b / c) without overflow for the sizes a simulation meets.
-std::uint64_t ceil_mul_div(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
-  const unsigned __int128 p = static_cast<unsigned __int128>(a) * b;
-  return static_cast<std::uint64_t>((p + c - 1) / c);
+// n x cost, naming the operation and the profile field if the product overflows.
+Cycles times(std::uint64_t n, std::string_view operations, Cycles cost, std::string_view field) {
+  std::uint64_t product = 0;
+  if (__builtin_mul_overflow(n, cost.count(), &product))
+    throw CycleOverflow(fmt::format("{} {} x {} ({} cycles)", n, operations, field, cost.count()));
+  return Cycles(product);
+}
+
+// The sum of one category's terms, an overflow located in that category.
+template <class Terms>
+Cycles category_cycles(CostCategory category, Terms terms) {
+  try {
+    return terms();
+  } catch (const CycleOverflow& e) {
+    throw e.inside(fmt::format("{} work", to_string(category)));
+  }
 }
 
 }  // namespace
 
 Cycles CostProfile::bus_data_cycles(std::uint64_t bytes) const {
-  return Cycles(ceil_mul_div(bytes, clock_hz, bus.bytes_per_second));
+  const std::optional<std::uint64_t> c = ceil_mul_div(bytes, clock_hz, bus.bytes_per_second);
+  if (!c)
+    throw CycleOverflow(fmt::format("{} bytes on the bus at bus.bytes_per_second {} and clock_hz {}",
+                                    bytes, bus.bytes_per_second, clock_hz));
+  return Cycles(*c);
 }
 
 Cycles CostProfile::link_data_cycles(std::uint64_t bytes) const {
-  return Cycles(ceil_mul_div(bytes * 8, clock_hz, link.bits_per_second));
+  // The bit count must fit 64 bits; its product with clock_hz is exact in 128.
+  std::optional<std::uint64_t> c;
+  std::uint64_t bits = 0;
+  if (!__builtin_mul_overflow(bytes, std::uint64_t{8}, &bits))
+    c = ceil_mul_div(bits, clock_hz, link.bits_per_second);
+  if (!c)
+    throw CycleOverflow(fmt::format("{} bytes on a link at link.bits_per_second {} and clock_hz {}",
+                                    bytes, link.bits_per_second, clock_hz));
+  return Cycles(*c);
 }
 
 CostProfile parse_cost_profile(std::string_view json_text, const std::string& source) {
@@ -110,11 +153,12 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   CostProfile p;
   p.name = top.text("name");
   p.description = top.text("description");
+  p.source = source;
   p.clock_hz = top.count("clock_hz");
   const std::uint64_t hz = p.clock_hz;
 
   ObjectReader cell(top.member("cell_costs_us"), "cell_costs_us", source);
-  auto cell_us = [&](const char* key) { return us_to_cycles(cell.number(key, 0), hz); };
+  auto cell_us = [&](const char* key) { return cell.cycles(key, hz); };
   p.cell.sphere_test = cell_us("sphere_test");
   p.cell.cone_test = cell_us("cone_test");
   p.cell.box_test = cell_us("box_test");
@@ -130,7 +174,7 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   cell.refuse_unknown_keys();
 
   ObjectReader host(top.member("host_costs_us"), "host_costs_us", source);
-  auto host_us = [&](const char* key) { return us_to_cycles(host.number(key, 0), hz); };
+  auto host_us = [&](const char* key) { return host.cycles(key, hz); };
   p.host.primitive = host_us("primitive");
   p.host.matmat = host_us("matmat");
   p.host.matvec = host_us("matvec");
@@ -140,13 +184,13 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
 
   ObjectReader bus(top.member("bus"), "bus", source);
   p.bus.bytes_per_second = bus.count("bytes_per_second");
-  p.bus.arbitration = us_to_cycles(bus.number("arbitration_us", 0), hz);
-  p.bus.latency = us_to_cycles(bus.number("latency_us", 0), hz);
+  p.bus.arbitration = bus.cycles("arbitration_us", hz);
+  p.bus.latency = bus.cycles("latency_us", hz);
   bus.refuse_unknown_keys();
 
   ObjectReader link(top.member("link"), "link", source);
   p.link.bits_per_second = link.count("bits_per_second");
-  p.link.latency = us_to_cycles(link.number("latency_us", 0), hz);
+  p.link.latency = link.cycles("latency_us", hz);
   const std::string topology = link.text("topology");
   const std::optional<LinkTopology> t = parse_link_topology(topology);
   if (!t) link.fail(link.where("topology"), fmt::format("'{}' must be \"mesh\" or \"torus\"", topology));
@@ -155,6 +199,9 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
 
   p.cell_memory_bytes = top.count("cell_memory_bytes");
   p.program_bytes = top.count("program_bytes");
+  if (p.program_bytes > p.cell_memory_bytes)
+    top.fail("program_bytes", fmt::format("({}) must not exceed cell_memory_bytes ({})",
+                                          p.program_bytes, p.cell_memory_bytes));
   top.refuse_unknown_keys();
   return p;
 }
@@ -215,20 +262,59 @@ CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& c) { return work_
 
 CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& c) {
   CostBreakdown b;
-  b[CostCategory::Intersection] =
-      ops.sphere_tests * c.sphere_test + ops.cone_tests * c.cone_test + ops.box_tests * c.box_test;
-  b[CostCategory::Dda] = ops.dda_setups * c.dda_setup + ops.dda_steps * c.dda_step;
-  b[CostCategory::Csg] = ops.tree_visits * c.tree_visit + ops.hits_sorted * c.hit_sort;
-  b[CostCategory::Other] = ops.matvec * c.matvec + ops.shading_evals * c.shading_eval +
-                           ops.rays * c.ray_other + ops.aa_squares * c.aa_square + pixels * c.pixel_write;
+  b[CostCategory::Intersection] = category_cycles(CostCategory::Intersection, [&] {
+    return times(ops.sphere_tests, "sphere tests", c.sphere_test, "cell_costs_us.sphere_test") +
+           times(ops.cone_tests, "cone tests", c.cone_test, "cell_costs_us.cone_test") +
+           times(ops.box_tests, "box tests", c.box_test, "cell_costs_us.box_test");
+  });
+  b[CostCategory::Dda] = category_cycles(CostCategory::Dda, [&] {
+    return times(ops.dda_setups, "3DDDA set-ups", c.dda_setup, "cell_costs_us.dda_setup") +
+           times(ops.dda_steps, "3DDDA steps", c.dda_step, "cell_costs_us.dda_step");
+  });
+  b[CostCategory::Csg] = category_cycles(CostCategory::Csg, [&] {
+    return times(ops.tree_visits, "status-tree visits", c.tree_visit, "cell_costs_us.tree_visit") +
+           times(ops.hits_sorted, "crossings sorted", c.hit_sort, "cell_costs_us.hit_sort");
+  });
+  b[CostCategory::Other] = category_cycles(CostCategory::Other, [&] {
+    return times(ops.matvec, "matrix-vector products", c.matvec, "cell_costs_us.matvec") +
+           times(ops.shading_evals, "shading evaluations", c.shading_eval,
+                 "cell_costs_us.shading_eval") +
+           times(ops.rays, "rays", c.ray_other, "cell_costs_us.ray_other") +
+           times(ops.aa_squares, "antialiasing squares", c.aa_square, "cell_costs_us.aa_square") +
+           times(pixels, "pixel writes", c.pixel_write, "cell_costs_us.pixel_write");
+  });
+  return b;
+}
+
+WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& c) {
+  auto t = [](std::uint64_t n, Cycles cost) { return static_cast<unsigned __int128>(n) * cost.count(); };
+  WideBreakdown w;
+  w.cycles[static_cast<int>(CostCategory::Intersection)] =
+      t(ops.sphere_tests, c.sphere_test) + t(ops.cone_tests, c.cone_test) + t(ops.box_tests, c.box_test);
+  w.cycles[static_cast<int>(CostCategory::Dda)] = t(ops.dda_setups, c.dda_setup) + t(ops.dda_steps, c.dda_step);
+  w.cycles[static_cast<int>(CostCategory::Csg)] = t(ops.tree_visits, c.tree_visit) + t(ops.hits_sorted, c.hit_sort);
+  w.cycles[static_cast<int>(CostCategory::Other)] = t(ops.matvec, c.matvec) + t(ops.shading_evals, c.shading_eval) +
+                                                    t(ops.rays, c.ray_other) + t(ops.aa_squares, c.aa_square) +
+                                                    t(pixels, c.pixel_write);
+  return w;
+}
+
+std::optional<CostBreakdown> WideBreakdown::narrow() const {
+  if (total() > Cycles::kMax) return std::nullopt;
+  CostBreakdown b;
+  for (int i = 0; i < kCostCategories; ++i) b.cycles[i] = Cycles(static_cast<std::uint64_t>(cycles[i]));
   return b;
 }
 
 CostBreakdown voxel_generation_cost(const VoxelGenCounts& n, const HostCosts& c) {
   CostBreakdown b;
-  b[CostCategory::VoxelGeneration] = n.primitives * c.primitive + n.matmat * c.matmat +
-                                     n.matvec * c.matvec + n.columns * c.column +
-                                     n.voxel_entries * c.voxel_entry;
+  b[CostCategory::VoxelGeneration] = category_cycles(CostCategory::VoxelGeneration, [&] {
+    return times(n.primitives, "primitives", c.primitive, "host_costs_us.primitive") +
+           times(n.matmat, "matrix-matrix products", c.matmat, "host_costs_us.matmat") +
+           times(n.matvec, "matrix-vector products", c.matvec, "host_costs_us.matvec") +
+           times(n.columns, "voxel columns", c.column, "host_costs_us.voxel_column") +
+           times(n.voxel_entries, "voxel entries", c.voxel_entry, "host_costs_us.voxel_entry");
+  });
   return b;
 }
 

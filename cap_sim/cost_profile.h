@@ -62,6 +62,7 @@ struct LinkCosts {
 struct CostProfile {
   std::string name;
   std::string description;
+  std::string source;  // where it was read from: a built-in name or a path
   std::uint64_t clock_hz = 0;
   CellCosts cell;
   HostCosts host;
@@ -70,7 +71,8 @@ struct CostProfile {
   std::uint64_t cell_memory_bytes = 0;  // program + scene + voxel data must fit
   std::uint64_t program_bytes = 0;      // the tracer program every cell holds
 
-  // Cycles to move `bytes` at the bus's and a link's rate (rounded up).
+  // Cycles to move `bytes` at the bus's and a link's rate (rounded up). Throw
+  // CycleOverflow, naming the rate's field, beyond 2^64 - 1 cycles.
   Cycles bus_data_cycles(std::uint64_t bytes) const;
   Cycles link_data_cycles(std::uint64_t bytes) const;
 };
@@ -78,7 +80,8 @@ struct CostProfile {
 // Parses a profile's JSON text. Throws std::runtime_error naming `source` and
 // the offending key for malformed JSON, a missing or unknown key, or a value out
 // of range. Times in the file are microseconds ("..._us"); each becomes
-// round(us * clock_hz / 1e6) cycles.
+// round(us * clock_hz / 1e6) cycles, and a time whose cycles a 64-bit count
+// cannot hold is out of range. program_bytes above cell_memory_bytes is too.
 CostProfile parse_cost_profile(std::string_view json_text, const std::string& source);
 
 // "cap" or "m380" (compiled in), or the path of a profile file.
@@ -91,6 +94,7 @@ inline constexpr int kCostCategories = 5;
 const char* to_string(CostCategory c);  // "intersection", "3DDDA", ...
 const char* json_key(CostCategory c);   // "intersection", "dda", "csg", "voxel_generation", "other"
 
+// Cycles by category. total() and += throw CycleOverflow beyond 2^64 - 1 cycles.
 struct CostBreakdown {
   std::array<Cycles, kCostCategories> cycles{};
 
@@ -102,21 +106,40 @@ struct CostBreakdown {
     return sum;
   }
   CostBreakdown& operator+=(const CostBreakdown& o) {
-    for (int i = 0; i < kCostCategories; ++i) cycles[i] += o.cycles[i];
+    std::array<Cycles, kCostCategories> sum = cycles;  // unchanged if a sum overflows
+    for (int i = 0; i < kCostCategories; ++i) sum[i] += o.cycles[i];
+    cycles = sum;
     return *this;
   }
 };
 
 // The cycles one pixel costs a cell: each operation count times its cost, the
-// per-ray fixed work for every ray, and one video-memory write.
+// per-ray fixed work for every ray, and one video-memory write. Throws
+// CycleOverflow naming the category and, for a product, the profile field.
 CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& costs);
 
 // pixel_cost summed over `pixels` pixels whose operations add up to `ops` (it is
 // linear in the counts, with one pixel_write a pixel): the same cycles, without
-// a conversion per pixel.
+// a conversion per pixel. Throws CycleOverflow as pixel_cost.
 CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& costs);
 
+// The same cycles exactly, in 128 bits (they cannot overflow for counts below
+// 2^64), to decide once whether a sum fits Cycles.
+struct WideBreakdown {
+  std::array<unsigned __int128, kCostCategories> cycles{};
+  unsigned __int128 total() const {
+    unsigned __int128 sum = 0;
+    for (unsigned __int128 c : cycles) sum += c;
+    return sum;
+  }
+  // The breakdown in Cycles, or nothing when the total exceeds Cycles::kMax
+  // (then some category or the total would not fit).
+  std::optional<CostBreakdown> narrow() const;
+};
+WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& costs);
+
 // The host's cycles for Algorithm-3 (all in CostCategory::VoxelGeneration).
+// Throws CycleOverflow as pixel_cost does.
 CostBreakdown voxel_generation_cost(const VoxelGenCounts& counts, const HostCosts& costs);
 
 }  // namespace capsim::sim

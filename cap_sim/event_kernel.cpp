@@ -1,5 +1,7 @@
 #include "event_kernel.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -18,6 +20,14 @@ bool EventKernel::runs_later(const Event& a, const Event& b) {
   if (a.at != b.at) return a.at > b.at;
   if (a.priority != b.priority) return a.priority > b.priority;
   return a.sequence > b.sequence;
+}
+
+Cycles EventKernel::after(Cycles delay) const {
+  try {
+    return now_ + delay;
+  } catch (const CycleOverflow&) {
+    throw CycleOverflow(fmt::format("an event {} cycles after cycle {}", delay.count(), now_.count()));
+  }
 }
 
 void EventKernel::schedule(Cycles at, EventPriority priority, Action action) {

@@ -42,8 +42,10 @@ class EventKernel {
   // Precondition: at >= now().
   void schedule(Cycles at, EventPriority priority, Action action);
   void schedule_after(Cycles delay, EventPriority priority, Action action) {
-    schedule(now_ + delay, priority, std::move(action));
+    schedule(after(delay), priority, std::move(action));
   }
+  // The cycle `delay` after now(). Throws CycleOverflow naming both beyond 2^64 - 1.
+  Cycles after(Cycles delay) const;
 
   // Takes ownership of a process and starts it at the current cycle
   // (priority Resume).
@@ -66,7 +68,7 @@ class EventKernel {
     EventKernel& kernel;
     Cycles duration;
     bool await_ready() const noexcept { return false; }
-    void await_suspend(ProcessHandle h) const { kernel.resume_at(kernel.now() + duration, h); }
+    void await_suspend(ProcessHandle h) const { kernel.resume_at(kernel.after(duration), h); }
     void await_resume() const noexcept {}
   };
   DelayAwaiter delay(Cycles duration) { return {*this, duration}; }

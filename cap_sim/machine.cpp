@@ -18,7 +18,9 @@
 namespace capsim::sim {
 
 void check_cell_memory(const SceneFootprint& f, const CostProfile& profile) {
-  const std::uint64_t needed = profile.program_bytes + f.scene_bytes() + f.voxel_bytes();
+  // 128 bits: the sum of three 64-bit sizes cannot wrap.
+  const unsigned __int128 needed = static_cast<unsigned __int128>(profile.program_bytes) +
+                                   f.scene_bytes() + f.voxel_bytes();
   if (needed > profile.cell_memory_bytes)
     throw std::runtime_error(fmt::format(
         "the scene does not fit a cell's memory: it needs {} bytes (program {} + scene {} + voxel "
@@ -108,9 +110,13 @@ std::uint64_t unit_video_memory(const std::vector<FrameWork>& frames, const Dist
 
 FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
                      const CostProfile& profile) {
-  FrameWork f{layout, scene_footprint(scene),
-              voxel_generation_cost(scene.voxel_counts, profile.host).total(), std::move(traced)};
-  return f;
+  Cycles voxel_generation;
+  try {
+    voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.host).total();
+  } catch (const CycleOverflow& e) {
+    throw e.inside("the host's voxel generation");
+  }
+  return FrameWork{layout, scene_footprint(scene), voxel_generation, std::move(traced)};
 }
 
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame) {
@@ -130,7 +136,11 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   for (const FrameWork& f : frames) check_cell_memory(f.footprint, profile);
 
   CostBreakdown voxel_generation;
-  for (const FrameWork& f : frames) voxel_generation[CostCategory::VoxelGeneration] += f.voxel_generation;
+  try {
+    for (const FrameWork& f : frames) voxel_generation[CostCategory::VoxelGeneration] += f.voxel_generation;
+  } catch (const CycleOverflow& e) {
+    throw e.inside("the host's voxel generation, all frames");
+  }
   const std::vector<DistributionUnit> units = distribution_units(frames, config);
 
   EventKernel kernel;
@@ -207,8 +217,17 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
     c.corners_received = r.corners_received;
     c.frame_busy = r.frame_busy;
     c.unit_finish = r.unit_finish;
-    result.breakdown += r.work;
+    try {
+      result.breakdown += r.work;
+    } catch (const CycleOverflow& e) {
+      throw e.inside("all cells' work and the host's voxel generation, by process");
+    }
     result.cells.push_back(std::move(c));
+  }
+  try {
+    (void)result.breakdown.total();  // the reports print it: refuse now, before any output
+  } catch (const CycleOverflow& e) {
+    throw e.inside("all cells' work and the host's voxel generation, in total");
   }
   result.width = frames[0].layout.width();
   result.height = frames[0].layout.height();
@@ -224,14 +243,32 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
   return run_frames(std::move(frames), config);
 }
 
+namespace {
+SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const MachineConfig& config,
+                               int threads, bool show_progress);
+}  // namespace
+
 SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const MachineConfig& config,
                                  int threads, bool show_progress) {
   if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
   if (config.frame_average && config.mode != PixelMode::Dot)
     throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
-  const Camera& cam = frames[0]->scene().camera;
   // Refuse a scene that does not fit before spending time tracing it.
   for (const Tracer* t : frames) check_cell_memory(scene_footprint(t->scene()), config.profile);
+  try {
+    return trace_and_run(frames, config, threads, show_progress);
+  } catch (const CycleOverflow& e) {
+    // The scenes are valid; the profile's costs make their time too long to count.
+    const CostProfile& profile = config.profile;
+    throw e.of_profile(profile.source.empty() ? profile.name : profile.source, profile.clock_hz);
+  }
+}
+
+namespace {
+
+SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const MachineConfig& config,
+                               int threads, bool show_progress) {
+  const Camera& cam = frames[0]->scene().camera;
   std::vector<FrameWork> work;
   work.reserve(frames.size());
   {
@@ -255,6 +292,8 @@ SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const
   tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
   return arena.execute([&] { return run_frames(std::move(work), config); });
 }
+
+}  // namespace
 
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
                                 bool show_progress) {

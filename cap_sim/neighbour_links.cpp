@@ -1,5 +1,7 @@
 #include "neighbour_links.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <stdexcept>
 
@@ -97,8 +99,15 @@ Cycles NeighbourLinks::forward(LinkMessage m, CellId at) {
   const std::size_t link = static_cast<std::size_t>(at) * 4 + static_cast<int>(d);
   Cycles& free_at = link_free_at_[link];
   const Cycles start = std::max(kernel_.now(), free_at);
-  const Cycles data = profile_.link_data_cycles(m.bytes);
-  const Cycles last_bit = start + data;
+  Cycles data, last_bit, delivered;
+  try {
+    data = profile_.link_data_cycles(m.bytes);
+    last_bit = start + data;
+    delivered = last_bit + profile_.link.latency;
+  } catch (const CycleOverflow& e) {
+    throw e.inside(fmt::format("link message \"{}\" sent from cell {} at cycle {}", m.label, at,
+                               start.count()));
+  }
   free_at = last_bit;
   LinkTraffic& t = traffic_[link];
   ++t.messages;
@@ -106,7 +115,7 @@ Cycles NeighbourLinks::forward(LinkMessage m, CellId at) {
   t.busy += data;
   t.max_wait = std::max(t.max_wait, start - kernel_.now());
   hops_.push_back({at, d, m.label, start, last_bit, m.bytes});
-  kernel_.schedule(last_bit + profile_.link.latency, EventPriority::Delivery,
+  kernel_.schedule(delivered, EventPriority::Delivery,
                    [this, m = std::move(m), next]() mutable {
                      ++m.hops;
                      if (next != m.to) {

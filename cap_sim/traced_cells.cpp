@@ -3,7 +3,11 @@
 #include "capsim/image_io.h"
 #include "capsim/progress.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
+#include <optional>
+#include <string>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -23,10 +27,25 @@ struct Sums {
   explicit Sums(int cells) : ops(cells), items(cells, 0) {}
 };
 
+std::string cell_name(const WindowLayout& layout, CellId c) {
+  const CellPosition p = layout.grid().position(c);
+  return fmt::format("cell[{},{}]", p.row, p.col);
+}
+
+// A cell whose work does not fit Cycles: its exact sum, for the message.
+struct CellOverflow {
+  CellId cell = 0;
+  std::uint64_t items = 0;
+  unsigned __int128 total = 0;
+};
+
 // Adds the per-thread sums into the cells: the work of `items` items whose
-// operations add up to ops.
+// operations add up to ops, decided exactly (128 bits), so whether it fits
+// does not depend on how the rows were spread over threads. Returns the first
+// cell, in id order, whose work does not fit 64 bits; add is then not called.
 template <class Add>
-void fold(const tbb::enumerable_thread_specific<Sums>& sums, int cell_count, const CellCosts& costs, Add add) {
+std::optional<CellOverflow> fold(const tbb::enumerable_thread_specific<Sums>& sums, int cell_count,
+                                 const CellCosts& costs, Add add) {
   std::vector<OpCounts> ops(cell_count);
   std::vector<std::uint64_t> items(cell_count, 0);
   for (const Sums& sum : sums)
@@ -34,7 +53,43 @@ void fold(const tbb::enumerable_thread_specific<Sums>& sums, int cell_count, con
       ops[c] += sum.ops[c];
       items[c] += sum.items[c];
     }
-  for (CellId c = 0; c < cell_count; ++c) add(c, work_cost(ops[c], items[c], costs), ops[c].rays);
+  std::vector<CostBreakdown> work(cell_count);
+  for (CellId c = 0; c < cell_count; ++c) {
+    const WideBreakdown wide = wide_work_cost(ops[c], items[c], costs);
+    const std::optional<CostBreakdown> fits = wide.narrow();
+    if (!fits) return CellOverflow{c, items[c], wide.total()};
+    work[c] = *fits;
+  }
+  for (CellId c = 0; c < cell_count; ++c) add(c, work[c], ops[c].rays);
+  return std::nullopt;
+}
+
+// A cell's work does not fit 64 bits. Names the first pixel in screen order
+// whose own cost does not fit (traced again: tracing is pure), or else the
+// cell and its exact sum; the same on any thread count.
+[[noreturn]] void refuse_overflow(const Tracer& tracer, const WindowLayout& layout, const CellCosts& costs,
+                                  const CellOverflow& cell, const char* items) {
+  Tracer::Scratch scratch(tracer.scene());
+  for (int y = 0; y < layout.height(); ++y)
+    for (int x = 0; x < layout.width(); ++x) {
+      OpCounts ops;
+      tracer.trace_pixel(x, y, scratch, ops);
+      try {
+        (void)pixel_cost(ops, costs).total();
+      } catch (const CycleOverflow& e) {
+        throw e.inside(fmt::format("pixel ({}, {}) of {}", x, y, cell_name(layout, layout.owner({x, y}).cell)));
+      }
+    }
+  throw CycleOverflow(fmt::format("{}'s work for its {} {} adds up to {} cycles", cell_name(layout, cell.cell),
+                                  cell.items, items, cell.total));
+}
+
+// One item's cycles for a float screen's per-pixel channel, at most
+// Cycles::kMax; a cost beyond that makes its cell's sum overflow too, which
+// fold refuses.
+std::uint64_t saturated_cycles(const OpCounts& ops, const CellCosts& costs) {
+  const unsigned __int128 total = wide_work_cost(ops, 1, costs).total();
+  return total > Cycles::kMax ? Cycles::kMax : static_cast<std::uint64_t>(total);
 }
 
 // Video memories of the right size and format for every cell.
@@ -96,7 +151,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
         const CellId c = owner(x, y).cell;
         sum.ops[c] += ops;
         ++sum.items[c];
-        if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = pixel_cost(ops, costs).total().count();
+        if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = saturated_cycles(ops, costs);
       },
       progress);
 
@@ -122,26 +177,35 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
         if (x == width - 1) owned += corner_cycles[corners.index(x + 1, y)];
         if (y == height - 1) owned += corner_cycles[corners.index(x, y + 1)];
         if (x == width - 1 && y == height - 1) owned += corner_cycles[corners.index(x + 1, y + 1)];
-        out.pixel_cycles[own.video_index] = owned + pixel_cost(ops, costs).total().count();
+        out.pixel_cycles[own.video_index] = owned + saturated_cycles(ops, costs);
         out.pixel_samples[own.video_index] =
             static_cast<std::uint32_t>(owned_corner_count(x, y, width, height) + px.subdivision_samples);
       }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * width);
   });
-  fold(corner_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
-    cells[c].corner_work = work;
-    cells[c].rays += rays;
-  });
-  fold(pixel_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
-    cells[c].subdivision_work = work;
-    cells[c].rays += rays;
-  });
+  if (const auto overflow = fold(corner_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+        cells[c].corner_work = work;
+        cells[c].rays += rays;
+      }))
+    throw CycleOverflow(fmt::format("{}'s work for its {} corner samples adds up to {} cycles",
+                                    cell_name(layout, overflow->cell), overflow->items, overflow->total));
+  if (const auto overflow = fold(pixel_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+        cells[c].subdivision_work = work;
+        cells[c].rays += rays;
+      }))
+    throw CycleOverflow(fmt::format("{}'s subdivision of its {} pixels adds up to {} cycles",
+                                    cell_name(layout, overflow->cell), overflow->items, overflow->total));
   for (TracedCell& c : cells) {
     c.work = c.corner_work;
-    c.work += c.subdivision_work;
+    try {
+      c.work += c.subdivision_work;
+    } catch (const CycleOverflow& e) {
+      throw e.inside("a cell's corner and subdivision work");
+    }
   }
   return cells;
 }
+
 
 }  // namespace
 
@@ -173,15 +237,16 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
         }
         OpCounts ops;
         store(out, owner.video_index, tracer.trace_pixel(x, y, s, ops), format);
-        out.pixel_cycles[owner.video_index] = pixel_cost(ops, costs).total().count();
+        out.pixel_cycles[owner.video_index] = saturated_cycles(ops, costs);
         sum.ops[owner.cell] += ops;
       }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
   });
-  fold(sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
-    cells[c].work = work;
-    cells[c].rays = rays;
-  });
+  if (const auto overflow = fold(sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+        cells[c].work = work;
+        cells[c].rays = rays;
+      }))
+    refuse_overflow(tracer, layout, costs, *overflow, "pixels");
   return cells;
 }
 

@@ -108,4 +108,46 @@ TEST(CliSimulate, BadOptionsFailWithAMessage) {
   }
 }
 
+// A copy of the cap profile with one value changed, written to `path`.
+void write_cap_profile_with(const std::string& path, const std::string& section,
+                            const std::string& key, const nlohmann::json& value) {
+  nlohmann::json p = nlohmann::json::parse(
+      read_file(std::string(CAPSIM_SOURCE_DIR) + "/cap_sim/profiles/cap.json"));
+  (section.empty() ? p : p[section])[key] = value;
+  std::ofstream(path) << p.dump(2);
+}
+
+TEST(CliSimulate, CycleCountsBeyond64BitsFailNamingTheProfileAndWriteNothing) {
+  TempDir dir;
+  struct Case {
+    std::string section, key;
+    nlohmann::json value;
+    std::string message;
+  };
+  const Case cases[] = {
+      // Each cost fits; a cell's sum does not (it used to wrap, exit 0).
+      {"cell_costs_us", "sphere_test", 1e17,
+       "slow.json: the simulated time exceeds the 64-bit cycle counter (18446744073709551615 cycles"},
+      // The cost itself does not fit (it used to become 2^63 cycles, exit 0).
+      {"cell_costs_us", "sphere_test", 1e19,
+       "slow.json: cell_costs_us.sphere_test = 1e+19 us is 8e+19 cycles at clock_hz 8000000, more "
+       "than a 64-bit cycle count holds"},
+      // Fits per cost, not per cell (it used to fail with "event scheduled in the past").
+      {"", "clock_hz", 18446744073709551615u,
+       "slow.json: the simulated time exceeds the 64-bit cycle counter (18446744073709551615 "
+       "cycles, 1 s at clock_hz 18446744073709551615): cell[0,0]'s work for its 64 pixels adds up to "}};
+  for (const Case& c : cases) {
+    write_cap_profile_with(dir / "slow.json", c.section, c.key, c.value);
+    const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 64x64 --profile " +
+                                       (dir / "slow.json") + " --report " + (dir / "r.json") + " --heatmap " +
+                                       (dir / "h.png"),
+                                   dir);
+    EXPECT_EQ(r.status, 1) << c.key << " " << c.value;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << c.value << ": " << r.err;
+    EXPECT_EQ(r.err.rfind("capsim: cost profile ", 0), 0u) << r.err;
+    EXPECT_EQ(r.out, "");
+    for (const char* f : {"s.png", "r.json", "h.png"}) EXPECT_FALSE(std::filesystem::exists(dir / f)) << f;
+  }
+}
+
 }  // namespace

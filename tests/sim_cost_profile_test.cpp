@@ -99,6 +99,66 @@ TEST(CostProfile, RefusesUnknownMissingAndBadValues) {
   expect_refused("{ not json", "not valid JSON");
 }
 
+TEST(CostProfile, RefusesATimeWhoseCyclesA64BitCountCannotHold) {
+  const nlohmann::json j = nlohmann::json::parse(minimal_profile_text());  // 1 MHz: 1 cycle per us
+  // The largest double below 2^64 is accepted, exactly; 2^64 itself is not.
+  nlohmann::json largest = j;
+  largest["host_costs_us"]["voxel_entry"] = 18446744073709549568.0;  // 2^64 - 2^11
+  EXPECT_EQ(parse_cost_profile(largest.dump(), "ok.json").host.voxel_entry,
+            Cycles(18446744073709549568u));
+  struct Case {
+    const char* section;
+    const char* key;
+    double us;
+  };
+  for (const Case& c : {Case{"host_costs_us", "voxel_entry", 18446744073709551616.0},
+                        Case{"cell_costs_us", "sphere_test", 1.85e19},
+                        Case{"cell_costs_us", "pixel_write", 1e20},
+                        Case{"host_costs_us", "voxel_column", 1e300},
+                        Case{"bus", "latency_us", 2e19},
+                        Case{"link", "latency_us", 1e25}}) {
+    nlohmann::json too_long = j;
+    too_long[c.section][c.key] = c.us;
+    expect_refused(too_long.dump(), std::string(c.section) + "." + c.key + " = ");
+    expect_refused(too_long.dump(), "more than a 64-bit cycle count holds");
+  }
+  // The same time is refused at a faster clock, and the message names the clock.
+  nlohmann::json fast = j;
+  fast["clock_hz"] = 18446744073709551615u;
+  fast["cell_costs_us"]["ray_other"] = 1e7;  // 10 s
+  expect_refused(fast.dump(), "cell_costs_us.ray_other = 10000000 us is 1.845e+20 cycles at clock_hz 18446744073709551615");
+}
+
+TEST(CostProfile, RefusesAProgramLargerThanACellsMemory) {
+  nlohmann::json j = nlohmann::json::parse(minimal_profile_text());
+  j["program_bytes"] = 4097;
+  expect_refused(j.dump(), "program_bytes (4097) must not exceed cell_memory_bytes (4096)");
+}
+
+TEST(CostProfile, DataCyclesBeyondTheCounterThrowNamingTheRate) {
+  CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
+  p.clock_hz = Cycles::kMax;
+  p.bus.bytes_per_second = 1;
+  EXPECT_EQ(p.bus_data_cycles(1), Cycles(Cycles::kMax));
+  try {
+    p.bus_data_cycles(2);
+    FAIL() << "no overflow";
+  } catch (const CycleOverflow& e) {
+    EXPECT_EQ(e.quantity(), "2 bytes on the bus at bus.bytes_per_second 1 and clock_hz 18446744073709551615");
+  }
+  // One cycle per bit: 2^61 - 1 bytes take the last cycles but one byte, 2^61
+  // bytes (2^64 bits) one cycle too many.
+  p = parse_cost_profile(minimal_profile_text(), "test");  // 8000 bits per second
+  p.clock_hz = 8000;
+  EXPECT_EQ(p.link_data_cycles((std::uint64_t{1} << 61) - 1), Cycles(Cycles::kMax - 7));
+  try {
+    p.link_data_cycles(std::uint64_t{1} << 61);
+    FAIL() << "no overflow";
+  } catch (const CycleOverflow& e) {
+    EXPECT_NE(e.quantity().find("on a link at link.bits_per_second 8000"), std::string::npos) << e.what();
+  }
+}
+
 TEST(CostProfile, UnknownNameThatIsNoFileIsRefused) {
   try {
     load_cost_profile("no-such-profile");
@@ -142,6 +202,54 @@ TEST(CostProfile, VoxelGenerationCostIsEachCountTimesItsHostCost) {
   const CostBreakdown b = voxel_generation_cost(n, p.host);
   EXPECT_EQ(b[CostCategory::VoxelGeneration], Cycles(10 * 1 + 10 * 2 + 80 * 3 + 50 * 4 + 200 * 5));
   EXPECT_EQ(b.total(), b[CostCategory::VoxelGeneration]);
+}
+
+TEST(CostProfile, APixelCostBeyondTheCounterNamesTheCategoryAndTheField) {
+  const CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
+  OpCounts ops;
+  ops.box_tests = std::uint64_t{1} << 63;  // x 3 cycles
+  try {
+    pixel_cost(ops, p.cell);
+    FAIL() << "no overflow";
+  } catch (const CycleOverflow& e) {
+    EXPECT_EQ(e.quantity(),
+              "intersection work: 9223372036854775808 box tests x cell_costs_us.box_test (3 cycles)");
+  }
+  // Each product fits; their sum does not.
+  OpCounts sum;
+  sum.dda_setups = std::uint64_t{1} << 61;  // x 4 cycles = 2^63
+  sum.dda_steps = std::uint64_t{1} << 61;   // x 5 cycles
+  try {
+    pixel_cost(sum, p.cell);
+    FAIL() << "no overflow";
+  } catch (const CycleOverflow& e) {
+    EXPECT_EQ(e.quantity(), "3DDDA (incl. set-up) work: 9223372036854775808 + 11529215046068469760 cycles");
+  }
+}
+
+TEST(CostProfile, VoxelGenerationBeyondTheCounterNamesTheHostField) {
+  const CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
+  VoxelGenCounts n;
+  n.voxel_entries = Cycles::kMax / 5 + 1;
+  try {
+    voxel_generation_cost(n, p.host);
+    FAIL() << "no overflow";
+  } catch (const CycleOverflow& e) {
+    EXPECT_NE(e.quantity().find("voxel entries x host_costs_us.voxel_entry (5 cycles)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(CostProfile, BreakdownSumsBeyondTheCounterThrowAndLeaveTheSumUnchanged) {
+  CostBreakdown a, b;
+  a[CostCategory::Dda] = Cycles(5);
+  a[CostCategory::Other] = Cycles(Cycles::kMax);
+  b[CostCategory::Dda] = Cycles(1);
+  b[CostCategory::Other] = Cycles(1);
+  EXPECT_THROW(a += b, CycleOverflow);
+  EXPECT_EQ(a[CostCategory::Dda], Cycles(5));
+  EXPECT_THROW(a.total(), CycleOverflow);
 }
 
 TEST(Heatmap, ColoursSurviveTheSrgbEncodingOfPngOutput) {

@@ -9,8 +9,10 @@
 #include "capsim/parser.h"
 #include "capsim/render.h"
 
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -147,6 +149,107 @@ TEST(Machine, RefusesASceneThatDoesNotFitACell) {
     EXPECT_NE(what.find(std::to_string(needed)), std::string::npos) << what;
     EXPECT_NE(what.find("70000"), std::string::npos) << what;
   }
+}
+
+TEST(Machine, MemoryNeedsBeyond64BitsDoNotWrapIntoAFit) {
+  const PreparedScene scene = balls(16, 16);
+  CostProfile profile = load_cost_profile("cap");
+  profile.cell_memory_bytes = Cycles::kMax;
+  profile.program_bytes = Cycles::kMax;  // + the scene's bytes: beyond 64 bits
+  EXPECT_THROW(check_cell_memory(scene_footprint(scene), profile), std::runtime_error);
+}
+
+// A pixel's cost exactly, in 128 bits: the reference for overflow checks.
+unsigned __int128 wide_pixel_cycles(const OpCounts& o, const CellCosts& c) {
+  auto t = [](std::uint64_t n, Cycles cost) { return static_cast<unsigned __int128>(n) * cost.count(); };
+  return t(o.sphere_tests, c.sphere_test) + t(o.cone_tests, c.cone_test) + t(o.box_tests, c.box_test) +
+         t(o.dda_setups, c.dda_setup) + t(o.dda_steps, c.dda_step) + t(o.tree_visits, c.tree_visit) +
+         t(o.hits_sorted, c.hit_sort) + t(o.matvec, c.matvec) + t(o.shading_evals, c.shading_eval) +
+         t(o.rays, c.ray_other) + c.pixel_write.count();
+}
+
+std::string cycle_overflow_of(const Tracer& tracer, const MachineConfig& config, int threads) {
+  try {
+    simulate_frame(tracer, config, threads, false);
+  } catch (const CycleOverflow& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no CycleOverflow on " << threads << " threads";
+  return {};
+}
+
+TEST(Machine, APixelBeyondTheCycleCounterIsTheFirstInScreenOrderOnAnyThreadCount) {
+  const PreparedScene scene = balls(40, 30);
+  const Tracer tracer(scene, TraceOptions{});
+  MachineConfig config = config_of({4, 4}, PixelMode::Dot);
+  config.profile.source = "slow.json";
+  config.profile.cell.sphere_test = Cycles(Cycles::kMax / 12);
+  // The reference: the first pixel in screen order whose exact cost exceeds 2^64 - 1.
+  Tracer::Scratch scratch(scene);
+  int first_x = -1, first_y = -1, overflowing = 0;
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) {
+      OpCounts ops;
+      tracer.trace_pixel(x, y, scratch, ops);
+      if (wide_pixel_cycles(ops, config.profile.cell) > Cycles::kMax && overflowing++ == 0) {
+        first_x = x;
+        first_y = y;
+      }
+    }
+  ASSERT_GT(overflowing, 1);
+  ASSERT_GT(first_y, 0);  // not simply the first pixel traced
+  const std::string message = cycle_overflow_of(tracer, config, 1);
+  EXPECT_EQ(message.rfind("cost profile slow.json: the simulated time exceeds the 64-bit cycle counter "
+                          "(18446744073709551615 cycles, 2305843009214 s at clock_hz 8000000): ", 0),
+            0u)
+      << message;
+  const std::string pixel = fmt::format("pixel ({}, {}) of cell[{},{}]: ", first_x, first_y,
+                                        first_y % 4, first_x % 4);
+  EXPECT_NE(message.find(pixel), std::string::npos) << message << "\nexpected " << pixel;
+  EXPECT_EQ(cycle_overflow_of(tracer, config, 2), message);
+  EXPECT_EQ(cycle_overflow_of(tracer, config, 0), message);
+}
+
+TEST(Machine, ACellsWorkBeyondTheCycleCounterNamesTheCellAndItsExactSum) {
+  const PreparedScene scene = balls(24, 20);
+  const Tracer tracer(scene, TraceOptions{.primary_only = true});
+  MachineConfig config = config_of({4, 4}, PixelMode::Dot);
+  config.profile.cell.ray_other = Cycles(Cycles::kMax / 2 + 1);  // every pixel fits; two do not
+  const WindowLayout layout(PixelMode::Dot, config.cells, 24, 20);
+  Tracer::Scratch scratch(scene);
+  unsigned __int128 cell0 = 0;
+  for (int k = 0; k < layout.window(0).pixel_count(); ++k) {
+    const ScreenPixel p = layout.window(0).screen_pixel(k);
+    OpCounts ops;
+    tracer.trace_pixel(p.x, p.y, scratch, ops);
+    ASSERT_EQ(ops.rays, 1u);
+    ASSERT_LE(wide_pixel_cycles(ops, config.profile.cell), Cycles::kMax);
+    cell0 += wide_pixel_cycles(ops, config.profile.cell);
+  }
+  const std::string expected = fmt::format("cell[0,0]'s work for its 30 pixels adds up to {} cycles", cell0);
+  for (int threads : {1, 2}) {
+    const std::string message = cycle_overflow_of(tracer, config, threads);
+    EXPECT_EQ(message.substr(message.size() - std::min(message.size(), expected.size())), expected)
+        << message;
+  }
+}
+
+TEST(Machine, AFrameBeyondTheCycleCounterNamesTheCellWhoseTracingEndsTooLate) {
+  const PreparedScene scene = balls(1, 1);
+  const Tracer tracer(scene, TraceOptions{.primary_only = true});
+  MachineConfig config = config_of({1, 1}, PixelMode::Dot);
+  config.profile.cell = CellCosts{};
+  config.profile.cell.ray_other = Cycles(Cycles::kMax - 1000);  // fits, but not after the broadcasts
+  const CostProfile& p = config.profile;
+  auto transfer = [&](std::uint64_t bytes) { return p.bus.arbitration + p.bus_data_cycles(bytes) + p.bus.latency; };
+  const SceneFootprint f = scene_footprint(scene);
+  Cycles start = voxel_generation_cost(scene.voxel_counts, p.host).total();
+  for (std::uint64_t bytes : {p.program_bytes, f.scene_bytes(), f.voxel_bytes(), kStartCommandBytes})
+    start += transfer(bytes);
+  const std::string message = cycle_overflow_of(tracer, config, 1);
+  const std::string expected =
+      fmt::format("cell[0,0]'s tracing: an event {} cycles after cycle {}", Cycles::kMax - 1000, start.count());
+  EXPECT_NE(message.find(expected), std::string::npos) << message << "\nexpected " << expected;
 }
 
 TEST(Machine, SceneFootprintCountsTheDataStructures) {
