@@ -2,6 +2,7 @@
 
 #include "cli_commands.h"
 #include "cli_options.h"
+#include "cli_usage.h"
 #include "heatmap.h"
 #include "machine.h"
 #include "capsim/progress.h"
@@ -12,9 +13,11 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <memory>
-#include <stdexcept>
+#include <optional>
 
 namespace capsim::cli {
 
@@ -34,7 +37,30 @@ void check_output_directory(const std::string& path) {
   if (path.empty()) return;
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   if (!dir.empty() && !std::filesystem::is_directory(dir))
-    throw std::invalid_argument(fmt::format("{}: directory {} does not exist", path, dir.string()));
+    throw UsageError(fmt::format("{}: directory {} does not exist", path, dir.string()));
+}
+
+// A built-in profile's name, or a profile file that can be opened; throws
+// UsageError otherwise. The file's content is checked as it loads (a bad file
+// is an input error, like a bad scene).
+void check_profile_option(const std::string& value) {
+  const std::vector<std::string> builtin = sim::builtin_profile_names();
+  if (std::find(builtin.begin(), builtin.end(), value) != builtin.end()) return;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(value, ec) || !std::ifstream(value))
+    refuse("--profile", value, "is neither a built-in profile nor a readable file");
+}
+
+sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
+  sim::MachineConfig config;
+  const auto [rows, cols] = parse_pair_option("--cells", o.cells, "RxC", sim::kMaxGridSide);
+  config.cells = sim::CellGrid{rows, cols};
+  const std::optional<sim::PixelMode> mode = sim::parse_pixel_mode(o.mode);
+  if (!mode) refuse("--mode", o.mode, "is not a pixel mode");
+  config.mode = *mode;
+  check_profile_option(o.profile);
+  if (!o.heatmap.empty() && !is_png_path(o.heatmap)) refuse("--heatmap", o.heatmap, "is not a .png path");
+  return config;
 }
 
 }  // namespace
@@ -47,12 +73,12 @@ Command add_simulate_command(CLI::App& app) {
       "Simulate the Cellular Array Processor running the tracer: the screen its video bus shows, "
       "per-cell times and the load spread (an .exr output also carries a 'cycles' channel)");
   add_tracer_options(*cmd, *opts);
-  cmd->add_option("--cells", sim->cells, "Cell grid RxC, 1x1 to 32x32")->default_val("8x8");
+  cmd->add_option("--cells", sim->cells, fmt::format("Cell grid RxC, 1x1 to {0}x{0}", sim::kMaxGridSide))
+      ->default_val("8x8");
   cmd->add_option("--mode", sim->mode,
                   "Pixel mode of the window controllers: block (a rectangle per cell), line (every "
                   "(R*C)-th row) or dot (one pixel of every RxC square)")
-      ->default_val("dot")
-      ->check(CLI::IsMember({"block", "line", "dot"}));
+      ->default_val("dot");
   cmd->add_option("--profile", sim->profile,
                   "Cost profile: cap (a CAP cell), m380 (the mainframe; use with --cells 1x1) or a "
                   "profile JSON file (docs/simulation.md)")
@@ -63,22 +89,19 @@ Command add_simulate_command(CLI::App& app) {
   cmd->add_option("--heatmap", sim->heatmap, "Write a PNG of per-cell busy time on the cell grid");
 
   return [opts, sim] {
-    sim::MachineConfig config;
-    config.cells = sim::parse_cell_grid(sim->cells);
-    config.mode = *sim::parse_pixel_mode(sim->mode);
-    config.profile = sim::load_cost_profile(sim->profile);
-    if (!sim->heatmap.empty() && !is_png_path(sim->heatmap))
-      throw std::invalid_argument(fmt::format("{}: the heat map is written as .png", sim->heatmap));
+    const TracerSettings settings = check_tracer_options(*opts);
+    sim::MachineConfig config = check_simulate_options(*sim);
     for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap}) check_output_directory(*path);
+    config.profile = sim::load_cost_profile(sim->profile);
 
-    const PreparedScene scene = load_scene(*opts);
-    const Tracer tracer(scene, trace_options(*opts));
+    const PreparedScene scene = load_scene(settings);
+    const Tracer tracer(scene, settings.trace);
     const sim::SimulationResult result =
-        sim::simulate_frame(tracer, config, opts->threads, Progress::stderr_is_terminal());
+        sim::simulate_frame(tracer, config, settings.threads, Progress::stderr_is_terminal());
 
     std::vector<ExtraChannel> extra;
-    if (!is_png_path(opts->output)) extra.push_back({"cycles", result.pixel_cycles});
-    write_image(opts->output, result.screen, extra);
+    if (!is_png_path(settings.output)) extra.push_back({"cycles", result.pixel_cycles});
+    write_image(settings.output, result.screen, extra);
     if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
     if (!sim->trace.empty()) {
       const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", sim::to_string(config.cells),

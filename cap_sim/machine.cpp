@@ -4,6 +4,7 @@
 #include "command_bus.h"
 #include "event_kernel.h"
 #include "host.h"
+#include "capsim/host_threads.h"
 #include "capsim/progress.h"
 #include "video_bus.h"
 
@@ -124,7 +125,7 @@ SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& confi
     traced = trace_cells(tracer, layout, config.profile.cell, threads, &progress);
   }
   // The event loop is serial; composing the screen uses the same host threads.
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(host_arena_concurrency(threads));
   return arena.execute([&] { return run_frame(tracer.scene(), layout, std::move(traced), config); });
 }
 

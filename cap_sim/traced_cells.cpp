@@ -1,5 +1,6 @@
 #include "traced_cells.h"
 
+#include "capsim/host_threads.h"
 #include "capsim/progress.h"
 
 #include <tbb/blocked_range.h>
@@ -32,7 +33,7 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
   });
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch(
       [&] { return Tracer::Scratch(tracer.scene()); });
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(host_arena_concurrency(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, layout.height()), [&](const tbb::blocked_range<int>& rows) {
       Tracer::Scratch& s = scratch.local();

@@ -2,77 +2,81 @@
 
 #include "capsim/image_io.h"
 #include "capsim/parser.h"
+#include "cli_usage.h"
 
 #include <fmt/core.h>
 
 #include <charconv>
 #include <filesystem>
-#include <stdexcept>
 
 namespace capsim::cli {
 
-namespace {
-
-int parse_int(const std::string& text, const char* what) {
-  int v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size())
-    throw std::invalid_argument(fmt::format("{} '{}' is not a whole number", what, text));
-  return v;
-}
-
-}  // namespace
-
 void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
-  cmd.add_option("scene", o.scene, "Scene file (OpenSCAD CSG grammar; see docs/scene-format.md)")
-      ->required();
-  cmd.add_option("-o,--output", o.output, "Output image: .png (8-bit sRGB) or .exr (linear float "
-                                          "R, G, B, A, Z, id)")
-      ->required();
-  cmd.add_option("--size", o.size, "Image size WxH (default: the scene camera's, or 512x512)");
+  cmd.add_option("scene", o.scene, "Scene file (OpenSCAD CSG grammar; see docs/scene-format.md)");
+  cmd.add_option("-o,--output", o.output, "Output image (required): .png (8-bit sRGB) or .exr (linear "
+                                          "float R, G, B, A, Z, id)");
+  cmd.add_option("--size", o.size,
+                 fmt::format("Image size WxH, W and H from 1 to {} (default: the scene camera's, or "
+                             "512x512)",
+                             kMaxImageSide));
   cmd.add_option("--grid", o.grid,
-                 "Voxel grid divisions per axis, 1 to 256, or 'auto' (twice the cube root of "
-                 "the primitive count, 8 to 64)")
+                 fmt::format("Voxel grid divisions per axis, 1 to {}, or 'auto' (twice the cube root of "
+                             "the primitive count, 8 to 64)",
+                             kMaxGridDivisions))
       ->default_val("auto");
-  cmd.add_option("--threads", o.threads, "Host threads (0 = all hardware threads); the output "
-                                         "does not depend on it")
-      ->default_val(0)
-      ->check(CLI::NonNegativeNumber);
+  cmd.add_option("--threads", o.threads,
+                 fmt::format("Host threads, 0 to {} (0 = all hardware threads; more than the host has "
+                             "run as many as it has); the output does not depend on it",
+                             kMaxThreadsOption))
+      ->default_val("0");
   cmd.add_flag("--primary-only", o.primary_only,
                "Trace only primary rays with local shading (no shadow, reflection or "
                "refraction rays), as in the paper's Table 4-2");
 }
 
-PreparedScene load_scene(const TracerOptions& o) {
-  if (!is_supported_image_path(o.output))
-    throw std::invalid_argument(fmt::format("{}: unsupported image type (use .png or .exr)", o.output));
-  const std::filesystem::path dir = std::filesystem::path(o.output).parent_path();
-  if (!dir.empty() && !std::filesystem::is_directory(dir))
-    throw std::invalid_argument(fmt::format("{}: directory {} does not exist", o.output, dir.string()));
-
-  PrepareOptions p;
-  if (!o.size.empty()) {
-    const auto x = o.size.find('x');
-    if (x == std::string::npos)
-      throw std::invalid_argument(fmt::format("--size '{}' is not WxH (e.g. 640x480)", o.size));
-    p.width = parse_int(o.size.substr(0, x), "--size width");
-    p.height = parse_int(o.size.substr(x + 1), "--size height");
-    if (p.width <= 0 || p.height <= 0)
-      throw std::invalid_argument(fmt::format("--size '{}' must be positive", o.size));
-  }
-  if (o.grid != "auto") {
-    p.grid = parse_int(o.grid, "--grid");
-    if (p.grid < 1)
-      throw std::invalid_argument(fmt::format("--grid {} is out of range (1 to {}, or auto)", p.grid,
-                                              kMaxGridDivisions));
-  }
-  return prepare_scene(parse_scene_file(o.scene), p);
+int parse_whole_option(const std::string& option, const std::string& value, int lo, int hi) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
+  if (value.empty() || end != value.data() + value.size()) refuse(option, value, "is not a whole number");
+  if (ec == std::errc::result_out_of_range || v < lo || v > hi) refuse(option, value, "is out of range");
+  return static_cast<int>(v);
 }
 
-capsim::TraceOptions trace_options(const TracerOptions& o) {
-  capsim::TraceOptions t;
-  t.primary_only = o.primary_only;
-  return t;
+std::pair<int, int> parse_pair_option(const std::string& option, const std::string& value,
+                                      const std::string& form, int max) {
+  const auto x = value.find_first_of("xX");
+  if (x == std::string::npos) refuse(option, value, "is not " + form);
+  const auto side = [&](const std::string& text) {
+    long long v = 0;
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+    if (text.empty() || end != text.data() + text.size()) refuse(option, value, "is not " + form);
+    if (ec == std::errc::result_out_of_range || v < 1 || v > max) refuse(option, value, "is out of range");
+    return static_cast<int>(v);
+  };
+  const int first = side(value.substr(0, x));
+  return {first, side(value.substr(x + 1))};
+}
+
+TracerSettings check_tracer_options(const TracerOptions& o) {
+  TracerSettings s;
+  if (o.scene.empty()) throw UsageError(fmt::format("SCENE is required (accepted: {})", accepted_values("scene")));
+  s.scene = o.scene;
+  if (o.output.empty())
+    throw UsageError(fmt::format("-o/--output is required (accepted: {})", accepted_values("--output")));
+  if (!is_supported_image_path(o.output)) refuse("--output", o.output, "has an unsupported image type");
+  s.output = o.output;
+  if (!o.size.empty()) std::tie(s.prepare.width, s.prepare.height) = parse_pair_option("--size", o.size, "WxH", kMaxImageSide);
+  if (o.grid != "auto") s.prepare.grid = parse_whole_option("--grid", o.grid, 1, kMaxGridDivisions);
+  s.threads = parse_whole_option("--threads", o.threads, 0, kMaxThreadsOption);
+  s.trace.primary_only = o.primary_only;
+  return s;
+}
+
+PreparedScene load_scene(const TracerSettings& s) {
+  const std::filesystem::path dir = std::filesystem::path(s.output).parent_path();
+  if (!dir.empty() && !std::filesystem::is_directory(dir))
+    throw UsageError(fmt::format("{}: directory {} does not exist", s.output, dir.string()));
+  return prepare_scene(parse_scene_file(s.scene), s.prepare);
 }
 
 }  // namespace capsim::cli

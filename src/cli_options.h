@@ -11,23 +11,45 @@
 
 namespace capsim::cli {
 
+// --threads accepts 0 to this; more than the host's hardware threads run as
+// many as it has (see host_arena_concurrency).
+inline constexpr int kMaxThreadsOption = 1024;
+
+// The options as typed; check_tracer_options turns them into settings.
 struct TracerOptions {
   std::string scene;
   std::string output;
-  std::string size;         // "WxH"; empty = the scene camera's size
+  std::string size;           // "WxH"; empty = the scene camera's size
   std::string grid = "auto";  // divisions per axis, or "auto"
-  int threads = 0;          // 0 = all hardware threads
+  std::string threads = "0";  // 0 = all hardware threads
   bool primary_only = false;
+};
+
+// The options checked and parsed.
+struct TracerSettings {
+  std::string scene;
+  std::string output;
+  PrepareOptions prepare;  // size (0x0 = the scene camera's) and grid (0 = auto)
+  int threads = 0;
+  TraceOptions trace;
 };
 
 // Registers the shared options on a subcommand, each with its help text.
 void add_tracer_options(CLI::App& cmd, TracerOptions& o);
 
-// Parses the scene file and builds the grid; throws SceneError for scene
-// problems and std::invalid_argument for bad option values. Checks the output
-// path first so that a bad -o fails before any work.
-PreparedScene load_scene(const TracerOptions& o);
+// Throws UsageError naming the first option that is missing or out of range.
+TracerSettings check_tracer_options(const TracerOptions& o);
 
-capsim::TraceOptions trace_options(const TracerOptions& o);
+// A whole number in [lo, hi] for an option; throws UsageError otherwise.
+int parse_whole_option(const std::string& option, const std::string& value, int lo, int hi);
+
+// Two whole numbers in [1, max] written "AxB", for an option (--size, --cells)
+// whose form is named `form` ("WxH"); throws UsageError otherwise.
+std::pair<int, int> parse_pair_option(const std::string& option, const std::string& value,
+                                      const std::string& form, int max);
+
+// Parses the scene file and builds the grid; throws SceneError for scene
+// problems.
+PreparedScene load_scene(const TracerSettings& s);
 
 }  // namespace capsim::cli

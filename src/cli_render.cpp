@@ -15,23 +15,24 @@ Command add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a CSG scene file with the paper's tracer");
   add_tracer_options(*cmd, *opts);
   return [opts] {
-    const PreparedScene scene = load_scene(*opts);
-    const Tracer tracer(scene, trace_options(*opts));
+    const TracerSettings settings = check_tracer_options(*opts);
+    const PreparedScene scene = load_scene(settings);
+    const Tracer tracer(scene, settings.trace);
     Progress progress("rendering", static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height,
                       Progress::stderr_is_terminal());
-    if (is_png_path(opts->output)) {
+    if (is_png_path(settings.output)) {
       // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
       const int width = scene.camera.width;
       std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * scene.camera.height * 3);
       render_rows(
-          tracer, opts->threads,
+          tracer, settings.threads,
           [&](int j, std::span<const PixelSample> row) {
             encode_srgb8_row(row, rgb.data() + static_cast<std::size_t>(j) * width * 3);
           },
           nullptr, &progress);
-      write_png_rgb8(opts->output, width, scene.camera.height, rgb);
+      write_png_rgb8(settings.output, width, scene.camera.height, rgb);
     } else {
-      write_image(opts->output, render(tracer, opts->threads, nullptr, &progress));
+      write_image(settings.output, render(tracer, settings.threads, nullptr, &progress));
     }
     return 0;
   };

@@ -9,8 +9,6 @@ namespace capsim {
 
 namespace {
 
-constexpr int kMaxImageSide = 16384;
-
 SourceLoc scene_start(const Scene& scene) {
   SourceLoc loc = scene.root.loc;
   if (loc.line == 0) {

@@ -1,5 +1,7 @@
 #include "capsim/render.h"
 
+#include "capsim/host_threads.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -36,7 +38,7 @@ void render_rows(const Tracer& tracer, int threads, const RowSink& store, Render
   };
   tbb::enumerable_thread_specific<Worker> workers(
       [&] { return Worker{Tracer::Scratch(tracer.scene()), std::vector<PixelSample>(cam.width)}; });
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(host_arena_concurrency(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, cam.height), [&](const tbb::blocked_range<int>& rows) {
       Worker& w = workers.local();

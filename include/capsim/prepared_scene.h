@@ -10,6 +10,10 @@
 
 namespace capsim {
 
+// The largest image side, in pixels, the tracer takes (as --size and as the
+// scene camera's size).
+inline constexpr int kMaxImageSide = 16384;
+
 struct PrepareOptions {
   int grid = 0;        // divisions per axis; 0 = auto_grid_divisions
   int width = 0;       // 0 = the camera's (or the default 512)
