@@ -2,6 +2,7 @@
 
 #include "cli_commands.h"
 #include "cli_options.h"
+#include "cli_outputs.h"
 #include "cli_usage.h"
 #include "heatmap.h"
 #include "machine.h"
@@ -32,20 +33,16 @@ struct SimulateOptions {
   std::string heatmap;  // PNG path; empty = none
 };
 
-// Fails before any work if an output's directory does not exist.
-void check_output_directory(const std::string& path) {
-  if (path.empty()) return;
-  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  if (!dir.empty() && !std::filesystem::is_directory(dir))
-    throw UsageError(fmt::format("{}: directory {} does not exist", path, dir.string()));
+bool is_builtin_profile(const std::string& value) {
+  const std::vector<std::string> builtin = sim::builtin_profile_names();
+  return std::find(builtin.begin(), builtin.end(), value) != builtin.end();
 }
 
 // A built-in profile's name, or a profile file that can be opened; throws
 // UsageError otherwise. The file's content is checked as it loads (a bad file
 // is an input error, like a bad scene).
 void check_profile_option(const std::string& value) {
-  const std::vector<std::string> builtin = sim::builtin_profile_names();
-  if (std::find(builtin.begin(), builtin.end(), value) != builtin.end()) return;
+  if (is_builtin_profile(value)) return;
   std::error_code ec;
   if (!std::filesystem::is_regular_file(value, ec) || !std::ifstream(value))
     refuse("--profile", value, "is neither a built-in profile nor a readable file");
@@ -91,7 +88,13 @@ Command add_simulate_command(CLI::App& app) {
   return [opts, sim] {
     const TracerSettings settings = check_tracer_options(*opts);
     sim::MachineConfig config = check_simulate_options(*sim);
-    for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap}) check_output_directory(*path);
+    std::vector<std::string> inputs = {settings.scene};
+    if (!is_builtin_profile(sim->profile)) inputs.push_back(sim->profile);
+    StagedOutputs outputs({{"--output", settings.output},
+                           {"--report", sim->report},
+                           {"--trace", sim->trace},
+                           {"--heatmap", sim->heatmap}},
+                          inputs);
     config.profile = sim::load_cost_profile(sim->profile);
 
     const PreparedScene scene = load_scene(settings);
@@ -101,15 +104,18 @@ Command add_simulate_command(CLI::App& app) {
 
     std::vector<ExtraChannel> extra;
     if (!is_png_path(settings.output)) extra.push_back({"cycles", result.pixel_cycles});
-    write_image(settings.output, result.screen, extra);
-    if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
+    write_image(outputs["--output"], result.screen, extra);
+    if (!sim->report.empty())
+      sim::write_text_file(outputs["--report"], sim::report_json(result).dump(2) + "\n");
     if (!sim->trace.empty()) {
       const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", sim::to_string(config.cells),
                                            sim::to_string(config.mode), config.profile.name);
-      sim::write_text_file(sim->trace,
+      sim::write_text_file(outputs["--trace"],
                            result.timeline.to_chrome_trace(name, config.profile.clock_hz).dump() + "\n");
     }
-    if (!sim->heatmap.empty()) write_image(sim->heatmap, sim::to_framebuffer(sim::render_heatmap(result)));
+    if (!sim->heatmap.empty())
+      write_image(outputs["--heatmap"], sim::to_framebuffer(sim::render_heatmap(result)));
+    outputs.commit();
     fmt::print("{}", sim::format_report(result));
     return 0;
   };

@@ -7,7 +7,6 @@
 #include <fmt/core.h>
 
 #include <charconv>
-#include <filesystem>
 
 namespace capsim::cli {
 
@@ -72,11 +71,6 @@ TracerSettings check_tracer_options(const TracerOptions& o) {
   return s;
 }
 
-PreparedScene load_scene(const TracerSettings& s) {
-  const std::filesystem::path dir = std::filesystem::path(s.output).parent_path();
-  if (!dir.empty() && !std::filesystem::is_directory(dir))
-    throw UsageError(fmt::format("{}: directory {} does not exist", s.output, dir.string()));
-  return prepare_scene(parse_scene_file(s.scene), s.prepare);
-}
+PreparedScene load_scene(const TracerSettings& s) { return prepare_scene(parse_scene_file(s.scene), s.prepare); }
 
 }  // namespace capsim::cli

@@ -4,6 +4,7 @@
 #include "capsim/render.h"
 #include "cli_commands.h"
 #include "cli_options.h"
+#include "cli_outputs.h"
 
 #include <memory>
 #include <vector>
@@ -16,6 +17,7 @@ Command add_render_command(CLI::App& app) {
   add_tracer_options(*cmd, *opts);
   return [opts] {
     const TracerSettings settings = check_tracer_options(*opts);
+    StagedOutputs outputs({{"--output", settings.output}}, {settings.scene});
     const PreparedScene scene = load_scene(settings);
     const Tracer tracer(scene, settings.trace);
     Progress progress("rendering", static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height,
@@ -30,10 +32,11 @@ Command add_render_command(CLI::App& app) {
             encode_srgb8_row(row, rgb.data() + static_cast<std::size_t>(j) * width * 3);
           },
           nullptr, &progress);
-      write_png_rgb8(settings.output, width, scene.camera.height, rgb);
+      write_png_rgb8(outputs["--output"], width, scene.camera.height, rgb);
     } else {
-      write_image(settings.output, render(tracer, settings.threads, nullptr, &progress));
+      write_image(outputs["--output"], render(tracer, settings.threads, nullptr, &progress));
     }
+    outputs.commit();
     return 0;
   };
 }
