@@ -1,6 +1,7 @@
 // capsim: the Cellular Array Processor ray-tracing simulator.
 
 #include "capsim/scene.h"
+#include "capsim/temp_file_registry.h"
 #include "cli_commands.h"
 #include "cli_usage.h"
 
@@ -27,6 +28,7 @@ void keep_freed_memory() {
 
 int main(int argc, char** argv) {
   keep_freed_memory();
+  capsim::remove_temp_files_on_signals();  // before TBB starts any thread
   CLI::App app{
       "capsim: a cycle-level simulator of Fujitsu's Cellular Array Processor (CAP)\n"
       "running the CSG ray tracer of Murakami, Sato and Hirota."};

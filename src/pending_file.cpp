@@ -1,5 +1,7 @@
 #include "capsim/pending_file.h"
 
+#include "capsim/temp_file_registry.h"
+
 #include <fcntl.h>
 #include <fmt/core.h>
 #include <unistd.h>
@@ -39,22 +41,27 @@ void check_target(const std::string& target) {
   if (!fs::is_directory(status)) throw failure(target, fmt::format("{} is not a directory", dir.string()));
 }
 
-// Creates a new empty file with a random hidden name beside target; O_EXCL
-// makes sure no other writer's file is taken over.
-std::string create_temporary_beside(const std::string& target) {
+// Creates a new empty file with a random hidden name beside target, and
+// registers it for removal on a signal; O_EXCL makes sure no other writer's file
+// is taken over. It is registered before it is created, so that no moment
+// exists when it is on disk and a signal would leave it.
+std::string create_temporary_beside(const std::string& target, int& signal_slot) {
   static thread_local std::mt19937_64 rng{std::random_device{}()};
   const fs::path path(target);
   for (int attempt = 0;; ++attempt) {
     const std::string temp =
         (path.parent_path() / fmt::format(".{}.{:016x}.tmp", path.filename().string(), rng())).string();
+    signal_slot = register_temp_file(temp);
     const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    const int error = errno;
     if (fd >= 0) {
       ::close(fd);
       return temp;
     }
-    if (errno != EEXIST || attempt == 100)
+    unregister_temp_file(std::exchange(signal_slot, -1));
+    if (error != EEXIST || attempt == 100)
       throw failure(target, fmt::format("cannot create a file in {}: {}", directory_of(path).string(),
-                                        std::strerror(errno)));
+                                        std::strerror(error)));
   }
 }
 
@@ -62,26 +69,30 @@ std::string create_temporary_beside(const std::string& target) {
 
 PendingFile::PendingFile(std::string target) : target_(std::move(target)) {
   check_target(target_);
-  temp_ = create_temporary_beside(target_);
+  temp_ = create_temporary_beside(target_, signal_slot_);
   pending_ = true;
 }
 
 PendingFile::PendingFile(PendingFile&& other) noexcept
-    : target_(std::move(other.target_)), temp_(std::move(other.temp_)), pending_(std::exchange(other.pending_, false)) {}
+    : target_(std::move(other.target_)),
+      temp_(std::move(other.temp_)),
+      pending_(std::exchange(other.pending_, false)),
+      signal_slot_(std::exchange(other.signal_slot_, -1)) {}
 
 PendingFile::~PendingFile() {
   if (pending_) ::unlink(temp_.c_str());
+  unregister_temp_file(signal_slot_);
 }
 
 void PendingFile::commit() {
   if (!pending_) throw std::logic_error(fmt::format("{}: committed twice", target_));
-  if (std::rename(temp_.c_str(), target_.c_str()) != 0) {
-    const int error = errno;
-    ::unlink(temp_.c_str());
-    pending_ = false;
-    throw failure(target_, fmt::format("cannot replace it: {}", std::strerror(error)));
-  }
+  const bool renamed = std::rename(temp_.c_str(), target_.c_str()) == 0;
+  const int error = errno;
+  if (!renamed) ::unlink(temp_.c_str());
   pending_ = false;
+  // After the rename: a signal in between finds no file under the old name.
+  unregister_temp_file(std::exchange(signal_slot_, -1));
+  if (!renamed) throw failure(target_, fmt::format("cannot replace it: {}", std::strerror(error)));
 }
 
 void commit_all(std::vector<PendingFile>& files) {

@@ -3,8 +3,9 @@
 // temporary name beside its target (".NAME.RANDOM.tmp", in the same directory
 // so that the final rename stays on one file system) and renamed over the
 // target by commit(); a PendingFile destroyed without commit() removes its
-// temporary file. Creating the temporary file first proves, before any work,
-// that the target can be written.
+// temporary file, and so does a signal that ends the process once main has
+// called remove_temp_files_on_signals (temp_file_registry.h). Creating the
+// temporary file first proves, before any work, that the target can be written.
 
 #include <string>
 #include <vector>
@@ -36,6 +37,7 @@ class PendingFile {
   std::string target_;
   std::string temp_;
   bool pending_ = false;  // the temporary file exists and is ours to remove
+  int signal_slot_ = -1;  // in the temp_file_registry, so that a signal removes it too
 };
 
 // Commits every file, in order, once all are written: a failure while writing
