@@ -11,6 +11,7 @@
 #include <fmt/core.h>
 #include <tbb/task_arena.h>
 
+#include <atomic>
 #include <memory>
 #include <stdexcept>
 
@@ -111,6 +112,23 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
     result.pixel_cycles[s] = static_cast<float>(cells[c]->pixel_cycles()[k]);
   });
   return result;
+}
+
+std::uint64_t simulation_result_memory(int width, int height) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  return Framebuffer::bytes(width, height) + pixels * sizeof(float);
+}
+
+std::uint64_t simulate_frame_memory(int width, int height) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  // trace_cells: a framebuffer pixel and a 64-bit cycle count per pixel, held
+  // by the cells until run_frame ends. compose_screen adds the screen and an
+  // owner count per pixel; then the result's float cycles are added. The owner
+  // counts are freed before that, but the allocator keeps blocks below its
+  // mapping threshold (main sets 32 MiB) for reuse, so they are counted too.
+  const std::uint64_t traced = Framebuffer::bytes(width, height) + pixels * sizeof(std::uint64_t);
+  const std::uint64_t owners = pixels * sizeof(std::atomic<unsigned char>);
+  return traced + owners + simulation_result_memory(width, height);
 }
 
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,

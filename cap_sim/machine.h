@@ -50,6 +50,15 @@ struct SimulationResult {
 // naming the needed and the available bytes.
 void check_cell_memory(const SceneFootprint& footprint, const CostProfile& profile);
 
+// The memory simulate_frame takes at its peak for a width x height screen,
+// beyond the scene: every cell's traced samples and per-pixel cycles, with the
+// screen they are composed into and the per-pixel cycles of the result.
+std::uint64_t simulate_frame_memory(int width, int height);
+
+// What a SimulationResult keeps of a width x height screen: the screen and the
+// per-pixel cycles.
+std::uint64_t simulation_result_memory(int width, int height);
+
 // Runs one frame on the machine with the work traced ahead.
 // Precondition: traced came from trace_cells on `scene` with `layout` and
 // config.profile's cell costs; layout has config's mode and grid.

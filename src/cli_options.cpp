@@ -1,12 +1,15 @@
 #include "cli_options.h"
 
 #include "capsim/image_io.h"
+#include "capsim/memory_limit.h"
 #include "capsim/parser.h"
 #include "cli_usage.h"
 
 #include <fmt/core.h>
 
+#include <cctype>
 #include <charconv>
+#include <limits>
 
 namespace capsim::cli {
 
@@ -28,6 +31,10 @@ void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
                              "run as many as it has); the output does not depend on it",
                              kMaxThreadsOption))
       ->default_val("0");
+  cmd.add_option("--max-memory", o.max_memory,
+                 "Refuse a run whose image buffers would need more memory than this: bytes, or with K, "
+                 "M, G or T (powers of 1024), e.g. 8G (default: the memory available, or less if the "
+                 "process has a limit; see README)");
   cmd.add_flag("--primary-only", o.primary_only,
                "Trace only primary rays with local shading (no shadow, reflection or "
                "refraction rays), as in the paper's Table 4-2");
@@ -56,6 +63,25 @@ std::pair<int, int> parse_pair_option(const std::string& option, const std::stri
   return {first, side(value.substr(x + 1))};
 }
 
+std::uint64_t parse_bytes_option(const std::string& option, const std::string& value) {
+  std::string digits = value;
+  int shift = 0;
+  if (!digits.empty()) {
+    const std::string units = "KMGT";
+    const auto unit = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(digits.back()))));
+    if (unit != std::string::npos) {
+      shift = 10 * static_cast<int>(unit + 1);
+      digits.pop_back();
+    }
+  }
+  std::uint64_t v = 0;
+  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (digits.empty() || end != digits.data() + digits.size()) refuse(option, value, "is not a size");
+  if (ec == std::errc::result_out_of_range || v == 0 || v > (std::numeric_limits<std::uint64_t>::max() >> shift))
+    refuse(option, value, "is out of range");
+  return v << shift;
+}
+
 TracerSettings check_tracer_options(const TracerOptions& o) {
   TracerSettings s;
   if (o.scene.empty()) throw UsageError(fmt::format("SCENE is required (accepted: {})", accepted_values("scene")));
@@ -67,10 +93,35 @@ TracerSettings check_tracer_options(const TracerOptions& o) {
   if (!o.size.empty()) std::tie(s.prepare.width, s.prepare.height) = parse_pair_option("--size", o.size, "WxH", kMaxImageSide);
   if (o.grid != "auto") s.prepare.grid = parse_whole_option("--grid", o.grid, 1, kMaxGridDivisions);
   s.threads = parse_whole_option("--threads", o.threads, 0, kMaxThreadsOption);
+  if (!o.max_memory.empty()) s.max_memory = parse_bytes_option("--max-memory", o.max_memory);
   s.trace.primary_only = o.primary_only;
   return s;
 }
 
-PreparedScene load_scene(const TracerSettings& s) { return prepare_scene(parse_scene_file(s.scene), s.prepare); }
+namespace {
+
+// Refuses an image whose buffers would not fit, before any of them is allocated.
+void check_memory(const TracerSettings& s, ImageSize size, const MemoryNeed& need) {
+  const std::uint64_t bytes = need(size);
+  MemoryLimit limit{s.max_memory, "set by --max-memory"};
+  if (s.max_memory == 0) {
+    const std::optional<MemoryLimit> tightest_limit = tightest(process_memory_limits());
+    if (!tightest_limit) return;  // nothing known to compare with
+    limit = *tightest_limit;
+  }
+  if (bytes <= limit.bytes) return;
+  throw UsageError(fmt::format(
+      "a {}x{} image needs about {} of image buffers, more than the {} {}; give a smaller --size{}",
+      size.width, size.height, format_bytes(bytes), format_bytes(limit.bytes), limit.source,
+      s.max_memory == 0 ? ", or --max-memory to set the limit" : " or a larger --max-memory"));
+}
+
+}  // namespace
+
+PreparedScene load_scene(const TracerSettings& s, const MemoryNeed& need) {
+  Scene scene = parse_scene_file(s.scene);
+  check_memory(s, image_size(scene, s.prepare), need);
+  return prepare_scene(std::move(scene), s.prepare);
+}
 
 }  // namespace capsim::cli

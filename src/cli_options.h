@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cstdint>
+#include <functional>
 #include <string>
 
 namespace capsim::cli {
@@ -22,6 +24,7 @@ struct TracerOptions {
   std::string size;           // "WxH"; empty = the scene camera's size
   std::string grid = "auto";  // divisions per axis, or "auto"
   std::string threads = "0";  // 0 = all hardware threads
+  std::string max_memory;     // e.g. "8G"; empty = what the machine and process limits leave
   bool primary_only = false;
 };
 
@@ -31,8 +34,12 @@ struct TracerSettings {
   std::string output;
   PrepareOptions prepare;  // size (0x0 = the scene camera's) and grid (0 = auto)
   int threads = 0;
+  std::uint64_t max_memory = 0;  // 0 = process_memory_limits()
   TraceOptions trace;
 };
+
+// The memory a command's image buffers take for an image size.
+using MemoryNeed = std::function<std::uint64_t(ImageSize)>;
 
 // Registers the shared options on a subcommand, each with its help text.
 void add_tracer_options(CLI::App& cmd, TracerOptions& o);
@@ -49,7 +56,9 @@ std::pair<int, int> parse_pair_option(const std::string& option, const std::stri
                                       const std::string& form, int max);
 
 // Parses the scene file and builds the grid; throws SceneError for scene
-// problems.
-PreparedScene load_scene(const TracerSettings& s);
+// problems. Between the two, once the image size is known (it may come from
+// the scene's camera), refuses with UsageError an image whose buffers would
+// need more memory than --max-memory or, by default, the process's limits.
+PreparedScene load_scene(const TracerSettings& s, const MemoryNeed& need);
 
 }  // namespace capsim::cli

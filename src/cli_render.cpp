@@ -18,11 +18,16 @@ Command add_render_command(CLI::App& app) {
   return [opts] {
     const TracerSettings settings = check_tracer_options(*opts);
     StagedOutputs outputs({{"--output", settings.output}}, {settings.scene});
-    const PreparedScene scene = load_scene(settings);
+    const bool png = is_png_path(settings.output);
+    const PreparedScene scene = load_scene(settings, [png](ImageSize size) {
+      const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
+      return png ? pixels * 3 + write_png_rgb8_memory(size.width, size.height)
+                 : Framebuffer::bytes(size.width, size.height) + write_image_memory(".exr", size.width, size.height, 0);
+    });
     const Tracer tracer(scene, settings.trace);
     Progress progress("rendering", static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height,
                       Progress::stderr_is_terminal());
-    if (is_png_path(settings.output)) {
+    if (png) {
       // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
       const int width = scene.camera.width;
       std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * scene.camera.height * 3);

@@ -25,6 +25,7 @@ std::string accepted_values(const std::string& option) {
   if (option == "--profile") return "cap, m380 or a profile JSON file as docs/simulation.md describes";
   if (option == "--heatmap") return "a path ending in .png";
   if (option == "--report" || option == "--trace") return "a file path";
+  if (option == "--max-memory") return "a whole number of bytes, or of K, M, G or T (powers of 1024), e.g. 8G";
   if (option == "--primary-only") return "no value, or true or false";
   return "";
 }

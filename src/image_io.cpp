@@ -252,6 +252,20 @@ void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb) {
   }
 }
 
+std::uint64_t write_png_rgb8_memory(int width, int height) {
+  const std::uint64_t filtered = (static_cast<std::uint64_t>(width) * 3 + 1) * static_cast<std::uint64_t>(height);
+  const std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
+      libdeflate_alloc_compressor(1), libdeflate_free_compressor);
+  if (!compressor) throw std::bad_alloc();
+  return filtered + libdeflate_zlib_compress_bound(compressor.get(), filtered);
+}
+
+std::uint64_t write_image_memory(const std::string& path, int width, int height, std::size_t extra_channels) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  if (is_png_path(path)) return pixels * 3 + write_png_rgb8_memory(width, height);
+  return pixels * (6 + extra_channels) * sizeof(float);
+}
+
 void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<unsigned char>& rgb) {
   if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
     throw std::logic_error(

@@ -41,6 +41,12 @@ Camera default_camera(const Aabb& bounds, int width, int height) {
   return cam;
 }
 
+ImageSize image_size(const Scene& scene, const PrepareOptions& options) {
+  if (options.width > 0) return {options.width, options.height};
+  if (scene.camera) return {scene.camera->width, scene.camera->height};
+  return {512, 512};
+}
+
 PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   PreparedScene ps;
   const SourceLoc start = scene_start(scene);
@@ -69,15 +75,13 @@ PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   const int n = options.grid > 0 ? options.grid : auto_grid_divisions(placed);
   ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts);
 
+  const ImageSize size = image_size(scene, options);
   if (scene.camera) {
     ps.camera = *scene.camera;
-    if (options.width > 0) {
-      ps.camera.width = options.width;
-      ps.camera.height = options.height;
-    }
+    ps.camera.width = size.width;
+    ps.camera.height = size.height;
   } else {
-    ps.camera = default_camera(universe, options.width > 0 ? options.width : 512,
-                               options.height > 0 ? options.height : 512);
+    ps.camera = default_camera(universe, size.width, size.height);
   }
   ps.lights = scene.lights;
   if (ps.lights.empty()) ps.lights.push_back({ps.camera.eye, glm::dvec3(1)});

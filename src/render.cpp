@@ -16,6 +16,10 @@ Framebuffer::Framebuffer(int w, int h)
       depth(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity()),
       id(static_cast<std::size_t>(w) * h, -1.0f) {}
 
+std::uint64_t Framebuffer::bytes(int w, int h) {
+  return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * (4 + 1 + 1) * sizeof(float);
+}
+
 void Framebuffer::set(int i, int j, const PixelSample& s) {
   const std::size_t k = static_cast<std::size_t>(j) * width + i;
   rgba[4 * k + 0] = static_cast<float>(s.color.x);

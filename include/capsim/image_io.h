@@ -33,6 +33,15 @@ void write_image(const std::string& path, const Framebuffer& fb,
 // which the caller commits; messages name the target.
 void write_image(PendingFile& out, const Framebuffer& fb, const std::vector<ExtraChannel>& extra = {});
 
+// The working memory write_image takes for a width x height image with
+// extra_channels extra channels, beyond the framebuffer and channels it is
+// given: for a PNG the 8-bit copy, the filtered rows and the compressed data
+// (write_png_rgb8_memory), for an EXR a planar copy of every channel.
+std::uint64_t write_image_memory(const std::string& path, int width, int height, std::size_t extra_channels);
+
+// The working memory write_png_rgb8 takes beyond its RGB bytes.
+std::uint64_t write_png_rgb8_memory(int width, int height);
+
 // True for the extensions write_image accepts (.png, .exr; any case).
 bool is_supported_image_path(const std::string& path);
 

@@ -36,6 +36,13 @@ struct PreparedScene {
 // degree vertical field, far enough that the bounding sphere fits the view.
 Camera default_camera(const Aabb& bounds, int width, int height);
 
+// The image size prepare_scene gives the camera: options' size if set, else the
+// scene camera's, else 512x512.
+struct ImageSize {
+  int width = 0, height = 0;
+};
+ImageSize image_size(const Scene& scene, const PrepareOptions& options);
+
 // Throws SceneError for a scene with nothing to draw or a size out of range.
 PreparedScene prepare_scene(Scene scene, const PrepareOptions& options);
 

@@ -5,6 +5,7 @@
 #include "capsim/progress.h"
 #include "capsim/tracer.h"
 
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
@@ -20,6 +21,9 @@ struct Framebuffer {
   Framebuffer() = default;
   Framebuffer(int w, int h);
   void set(int i, int j, const PixelSample& s);
+
+  // The bytes the buffers of a w x h framebuffer hold.
+  static std::uint64_t bytes(int w, int h);
 };
 
 struct RenderStats {
