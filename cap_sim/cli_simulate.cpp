@@ -2,6 +2,8 @@
 
 #include "cli_commands.h"
 #include "cli_options.h"
+#include "cli_outputs.h"
+#include "cli_usage.h"
 #include "heatmap.h"
 #include "machine.h"
 #include "capsim/progress.h"
@@ -12,9 +14,11 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <memory>
-#include <stdexcept>
+#include <optional>
 
 namespace capsim::cli {
 
@@ -27,14 +31,39 @@ struct SimulateOptions {
   std::string report;   // JSON report path; empty = none
   std::string trace;    // Chrome trace-event JSON path; empty = none
   std::string heatmap;  // PNG path; empty = none
+  bool frame_average = false;
 };
 
-// Fails before any work if an output's directory does not exist.
-void check_output_directory(const std::string& path) {
-  if (path.empty()) return;
-  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
-  if (!dir.empty() && !std::filesystem::is_directory(dir))
-    throw std::invalid_argument(fmt::format("{}: directory {} does not exist", path, dir.string()));
+bool is_builtin_profile(const std::string& value) {
+  const std::vector<std::string> builtin = sim::builtin_profile_names();
+  return std::find(builtin.begin(), builtin.end(), value) != builtin.end();
+}
+
+// A built-in profile's name, or a profile file that can be opened; throws
+// UsageError otherwise. The file's content is checked as it loads (a bad file
+// is an input error, like a bad scene).
+void check_profile_option(const std::string& value) {
+  if (is_builtin_profile(value)) return;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(value, ec) || !std::ifstream(value))
+    refuse("--profile", value, "is neither a built-in profile nor a readable file");
+}
+
+sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
+  sim::MachineConfig config;
+  const auto [rows, cols] = parse_pair_option("--cells", o.cells, "RxC", sim::kMaxGridSide);
+  config.cells = sim::CellGrid{rows, cols};
+  const std::optional<sim::PixelMode> mode = sim::parse_pixel_mode(o.mode);
+  if (!mode) refuse("--mode", o.mode, "is not a pixel mode");
+  config.mode = *mode;
+  check_profile_option(o.profile);
+  if (!o.heatmap.empty() && !is_png_path(o.heatmap)) refuse("--heatmap", o.heatmap, "is not a .png path");
+  config.frame_average = o.frame_average;
+  if (o.frame_average && config.mode != sim::PixelMode::Dot)
+    throw UsageError(fmt::format("--frame-average turns the dot pattern from frame to frame: it needs --mode dot, "
+                                 "not {}",
+                                 o.mode));
+  return config;
 }
 
 }  // namespace
@@ -47,12 +76,12 @@ Command add_simulate_command(CLI::App& app) {
       "Simulate the Cellular Array Processor running the tracer: the screen its video bus shows, "
       "per-cell times and the load spread (an .exr output also carries a 'cycles' channel)");
   add_tracer_options(*cmd, *opts);
-  cmd->add_option("--cells", sim->cells, "Cell grid RxC, 1x1 to 32x32")->default_val("8x8");
+  cmd->add_option("--cells", sim->cells, fmt::format("Cell grid RxC, 1x1 to {0}x{0}", sim::kMaxGridSide))
+      ->default_val("8x8");
   cmd->add_option("--mode", sim->mode,
                   "Pixel mode of the window controllers: block (a rectangle per cell), line (every "
                   "(R*C)-th row) or dot (one pixel of every RxC square)")
-      ->default_val("dot")
-      ->check(CLI::IsMember({"block", "line", "dot"}));
+      ->default_val("dot");
   cmd->add_option("--profile", sim->profile,
                   "Cost profile: cap (a CAP cell), m380 (the mainframe; use with --cells 1x1) or a "
                   "profile JSON file (docs/simulation.md)")
@@ -61,39 +90,71 @@ Command add_simulate_command(CLI::App& app) {
   cmd->add_option("--trace", sim->trace,
                   "Write the timeline as Chrome trace-event JSON (opens in ui.perfetto.dev)");
   cmd->add_option("--heatmap", sim->heatmap, "Write a PNG of per-cell busy time on the cell grid");
+  cmd->add_flag("--frame-average", sim->frame_average,
+                "Frame-averaged distribution (dot mode): the dot pattern turns every frame, and the cells run "
+                "through groups of RxC frames without waiting for each other (docs/animation.md)");
 
   return [opts, sim] {
-    sim::MachineConfig config;
-    config.cells = sim::parse_cell_grid(sim->cells);
-    config.mode = *sim::parse_pixel_mode(sim->mode);
+    const TracerSettings settings = check_tracer_options(*opts);
+    sim::MachineConfig config = check_simulate_options(*sim);
+    config.aa = settings.aa;
+    const bool png = is_png_path(settings.output);
+    config.screen = png ? sim::ScreenFormat::Srgb8 : sim::ScreenFormat::Float;
+    const int frames = static_cast<int>(settings.scenes.size());
+    std::vector<std::string> inputs = settings.scenes;
+    if (!is_builtin_profile(sim->profile)) inputs.push_back(sim->profile);
+    std::vector<OutputOption> staged;
+    for (int k = 0; k < frames; ++k)
+      staged.push_back({frame_output_option(k, frames), frame_output(settings.output, k, frames)});
+    for (const OutputOption& o : std::vector<OutputOption>{
+             {"--report", sim->report}, {"--trace", sim->trace}, {"--heatmap", sim->heatmap}})
+      staged.push_back(o);
+    StagedOutputs outputs(staged, inputs);
     config.profile = sim::load_cost_profile(sim->profile);
-    config.aa = antialias_options(*opts);
-    config.screen = is_png_path(opts->output) ? sim::ScreenFormat::Srgb8 : sim::ScreenFormat::Float;
-    if (!sim->heatmap.empty() && !is_png_path(sim->heatmap))
-      throw std::invalid_argument(fmt::format("{}: the heat map is written as .png", sim->heatmap));
-    for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap}) check_output_directory(*path);
 
-    const PreparedScene scene = load_scene(*opts);
-    const Tracer tracer(scene, trace_options(*opts));
-    const sim::SimulationResult result =
-        sim::simulate_frame(tracer, config, opts->threads, Progress::stderr_is_terminal());
-
-    const sim::FrameScreen& screen = result.screens.at(0);
-    if (config.screen == sim::ScreenFormat::Srgb8) {
-      write_png_rgb8(opts->output, result.width, result.height, screen.screen_srgb8);
-    } else {
-      std::vector<ExtraChannel> extra = {{"cycles", screen.pixel_cycles}};
-      if (config.aa.depth > 0) extra.push_back({"samples", screen.pixel_samples});
-      write_image(opts->output, screen.screen, extra);
+    const std::vector<PreparedScene> scenes = load_scenes(settings, [config, png](ImageSize size, int count) {
+      // The run's peak, or its result while a screen is written (a PNG
+      // compresses the screen's bytes; an EXR copies its cycles and,
+      // antialiased, its samples into channels, then makes planes of all).
+      const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
+      const std::size_t extra = config.aa.depth > 0 ? 2 : 1;
+      const std::uint64_t writing =
+          sim::simulation_result_memory(config, size.width, size.height, count) +
+          (png ? write_png_rgb8_memory(size.width, size.height)
+               : extra * pixels * sizeof(float) + write_image_memory(".exr", size.width, size.height, extra));
+      return std::max(sim::simulation_memory(config, size.width, size.height, count), writing);
+    });
+    std::vector<std::unique_ptr<Tracer>> tracers;
+    std::vector<const Tracer*> frame_tracers;
+    for (const PreparedScene& scene : scenes) {
+      tracers.push_back(std::make_unique<Tracer>(scene, settings.trace));
+      frame_tracers.push_back(tracers.back().get());
     }
-    if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
+    const sim::SimulationResult result =
+        sim::simulate_frames(frame_tracers, config, settings.threads, Progress::stderr_is_terminal());
+
+    for (int k = 0; k < frames; ++k) {
+      const sim::FrameScreen& screen = result.screens[k];
+      PendingFile& out = outputs[frame_output_option(k, frames)];
+      if (png) {
+        write_png_rgb8(out, result.width, result.height, screen.screen_srgb8);
+      } else {
+        std::vector<ExtraChannel> extra = {{"cycles", screen.pixel_cycles}};
+        if (config.aa.depth > 0) extra.push_back({"samples", screen.pixel_samples});
+        write_image(out, screen.screen, extra);
+      }
+    }
+    if (!sim->report.empty())
+      sim::write_text_file(outputs["--report"], sim::report_json(result).dump(2) + "\n");
     if (!sim->trace.empty()) {
       const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", sim::to_string(config.cells),
                                            sim::to_string(config.mode), config.profile.name);
-      sim::write_text_file(sim->trace,
+      sim::write_text_file(outputs["--trace"],
                            result.timeline.to_chrome_trace(name, config.profile.clock_hz).dump() + "\n");
     }
-    if (!sim->heatmap.empty()) write_image(sim->heatmap, sim::to_framebuffer(sim::render_heatmap(result)));
+    if (!sim->heatmap.empty())
+      write_image(outputs["--heatmap"], sim::to_framebuffer(sim::render_heatmap(result)));
+    outputs.commit();
     fmt::print("{}", sim::format_report(result));
     return 0;
   };

@@ -4,6 +4,7 @@
 #include "command_bus.h"
 #include "event_kernel.h"
 #include "host.h"
+#include "capsim/host_threads.h"
 #include "capsim/progress.h"
 #include "video_bus.h"
 
@@ -117,6 +118,41 @@ FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std
     throw e.inside("the host's voxel generation");
   }
   return FrameWork{layout, scene_footprint(scene), voxel_generation, std::move(traced)};
+}
+
+std::uint64_t simulation_memory(const MachineConfig& config, int width, int height, int frames) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  const std::uint64_t corners = static_cast<std::uint64_t>(width + 1) * static_cast<std::uint64_t>(height + 1);
+  const bool aa = config.aa.depth > 0;
+  // Per pixel and frame, kept to the end: the video memory and the screen.
+  std::uint64_t per_pixel = 0;
+  if (config.screen == ScreenFormat::Srgb8) {
+    per_pixel = 3 + 3;
+  } else {
+    const std::uint64_t frame = Framebuffer::bytes(1, 1);
+    per_pixel = frame + sizeof(std::uint64_t) + (aa ? sizeof(std::uint32_t) : 0)   // video memory
+                + frame + sizeof(float) + (aa ? sizeof(float) : 0);                   // screen
+  }
+  std::uint64_t bytes = per_pixel * pixels * static_cast<std::uint64_t>(frames) + pixels;  // + owner counts
+  if (aa) {
+    // One frame's corners (and their cycles, for a float screen) while it is traced.
+    bytes += corners * (sizeof(ScreenSample) + (config.screen == ScreenFormat::Float ? sizeof(std::uint64_t) : 0));
+    // A unit's exchange plan while it is built: up to 3 corners needed per pixel,
+    // each as a need (8 bytes), a vertical and a horizontal leg (12 bytes each),
+    // and in the plan kept (4 bytes as a need, 4 in each of two messages).
+    const std::uint64_t unit = config.frame_average ? std::min<std::uint64_t>(frames, config.cells.cell_count()) : 1;
+    bytes += unit * pixels * 3 * (8 + 12 + 12 + 4 + 4 + 4);
+  }
+  return bytes;
+}
+
+std::uint64_t simulation_result_memory(const MachineConfig& config, int width, int height, int frames) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  const std::uint64_t per_pixel = config.screen == ScreenFormat::Srgb8
+                                      ? 3
+                                      : Framebuffer::bytes(1, 1) + sizeof(float) +
+                                            (config.aa.depth > 0 ? sizeof(float) : 0);
+  return per_pixel * pixels * static_cast<std::uint64_t>(frames);
 }
 
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame) {
@@ -289,7 +325,7 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
     }
   }
   // The event loop is serial; composing the screens uses the same host threads.
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(host_arena_concurrency(threads));
   return arena.execute([&] { return run_frames(std::move(work), config); });
 }
 

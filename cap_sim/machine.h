@@ -109,6 +109,16 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
 SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
                            std::vector<TracedCell> traced, const MachineConfig& config);
 
+// The memory a run of `frames` frames of width x height takes at its peak,
+// beyond the scenes: every frame's video memories and composed screen (kept to
+// the end), the owner count per pixel composing checks, and, antialiased, one
+// frame's corner samples and a distribution unit's exchange plan while they
+// are built. docs/simulation.md gives the bytes per pixel.
+std::uint64_t simulation_memory(const MachineConfig& config, int width, int height, int frames);
+
+// What the SimulationResult of such a run keeps: the frames' screens.
+std::uint64_t simulation_result_memory(const MachineConfig& config, int width, int height, int frames);
+
 // The window layout of frame f of a run.
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame);
 

@@ -1,32 +1,44 @@
 #include "text_output.h"
 
+#include <fcntl.h>
 #include <fmt/core.h>
+#include <unistd.h>
 
-#include <filesystem>
-#include <fstream>
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 namespace capsim::sim {
 
-void write_text_file(const std::string& path, const std::string& text) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path temp = target.parent_path() / ("." + target.filename().string() + ".partial");
-  {
-    std::ofstream out(temp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(temp, ignored);
-      throw std::runtime_error(fmt::format("{}: cannot write", path));
+namespace {
+
+// errno's text, read before anything else can change errno.
+std::runtime_error write_failure(const PendingFile& out) {
+  return std::runtime_error(fmt::format("{}: {}", out.target(), std::strerror(errno)));
+}
+
+}  // namespace
+
+void write_text_file(PendingFile& out, const std::string& text) {
+  const int fd = ::open(out.temp_path().c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC);
+  if (fd < 0) throw write_failure(out);
+  for (std::size_t done = 0; done < text.size();) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      const std::runtime_error error = write_failure(out);
+      ::close(fd);
+      throw error;
     }
+    done += static_cast<std::size_t>(n);
   }
-  std::error_code ec;
-  std::filesystem::rename(temp, target, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw std::runtime_error(fmt::format("{}: cannot write: {}", path, ec.message()));
-  }
+  if (::close(fd) != 0) throw write_failure(out);
+}
+
+void write_text_file(const std::string& path, const std::string& text) {
+  PendingFile out(path);
+  write_text_file(out, text);
+  out.commit();
 }
 
 }  // namespace capsim::sim

@@ -1,6 +1,7 @@
 #include "traced_cells.h"
 
 #include "capsim/image_io.h"
+#include "capsim/host_threads.h"
 #include "capsim/progress.h"
 
 #include <fmt/core.h>
@@ -119,7 +120,7 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
 // Runs body(rows) over the screen's rows on `threads` host threads.
 template <class Body>
 void parallel_rows(int threads, int count, Body body) {
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(host_arena_concurrency(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
   });

@@ -4,6 +4,7 @@
 #include "capsim/render.h"
 #include "cli_commands.h"
 #include "cli_options.h"
+#include "cli_outputs.h"
 
 #include <memory>
 #include <vector>
@@ -15,39 +16,61 @@ Command add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a CSG scene file with the paper's tracer");
   add_tracer_options(*cmd, *opts);
   return [opts] {
-    const PreparedScene scene = load_scene(*opts);
-    const Tracer tracer(scene, trace_options(*opts));
-    const AntialiasOptions aa = antialias_options(*opts);
-    Progress progress("rendering", render_work(scene.camera.width, scene.camera.height, aa),
+    const TracerSettings settings = check_tracer_options(*opts);
+    const int frames = static_cast<int>(settings.scenes.size());
+    std::vector<OutputOption> staged;
+    for (int k = 0; k < frames; ++k)
+      staged.push_back({frame_output_option(k, frames), frame_output(settings.output, k, frames)});
+    StagedOutputs outputs(staged, settings.scenes);
+    const bool png = is_png_path(settings.output);
+    const AntialiasOptions aa = settings.aa;
+    const std::vector<PreparedScene> scenes = load_scenes(settings, [png, aa](ImageSize size, int) {
+      // One frame at a time: each is written to its staged file before the next.
+      const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
+      const std::uint64_t corners = aa.depth > 0 ? static_cast<std::uint64_t>(size.width + 1) *
+                                                       static_cast<std::uint64_t>(size.height + 1) * sizeof(ScreenSample)
+                                                 : 0;
+      return corners + (png ? pixels * 3 + write_png_rgb8_memory(size.width, size.height)
+                            : Framebuffer::bytes(size.width, size.height) + (aa.depth > 0 ? pixels * sizeof(float) : 0) +
+                                  write_image_memory(".exr", size.width, size.height, aa.depth > 0 ? 1 : 0));
+    });
+    const int width = scenes[0].camera.width, height = scenes[0].camera.height;
+    Progress progress(frames == 1 ? "rendering" : "frames", frames == 1 ? render_work(width, height, aa) : frames,
                       Progress::stderr_is_terminal());
-    if (is_png_path(opts->output)) {
-      // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
-      const int width = scene.camera.width;
-      std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * scene.camera.height * 3);
-      render_rows(
-          tracer, opts->threads,
-          [&](int j, std::span<const PixelSample> row) {
-            encode_srgb8_row(row, rgb.data() + static_cast<std::size_t>(j) * width * 3);
-          },
-          nullptr, &progress, aa);
-      write_png_rgb8(opts->output, width, scene.camera.height, rgb);
-    } else if (aa.depth == 0) {
-      write_image(opts->output, render(tracer, opts->threads, nullptr, &progress));
-    } else {
-      // Antialiased EXR: also the samples traced for each pixel.
-      Framebuffer fb(scene.camera.width, scene.camera.height);
-      ExtraChannel samples{"samples", std::vector<float>(static_cast<std::size_t>(fb.width) * fb.height)};
-      render_rows(
-          tracer, opts->threads,
-          [&](int j, std::span<const PixelSample> row) {
-            for (int i = 0; i < fb.width; ++i) {
-              fb.set(i, j, row[i]);
-              samples.values[static_cast<std::size_t>(j) * fb.width + i] = static_cast<float>(row[i].samples);
-            }
-          },
-          nullptr, &progress, aa);
-      write_image(opts->output, fb, {samples});
+    for (int k = 0; k < frames; ++k) {
+      const Tracer tracer(scenes[k], settings.trace);
+      Progress* rows = frames == 1 ? &progress : nullptr;
+      PendingFile& out = outputs[frame_output_option(k, frames)];
+      if (png) {
+        // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
+        std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
+        render_rows(
+            tracer, settings.threads,
+            [&](int j, std::span<const PixelSample> row) {
+              encode_srgb8_row(row, rgb.data() + static_cast<std::size_t>(j) * width * 3);
+            },
+            nullptr, rows, aa);
+        write_png_rgb8(out, width, height, rgb);
+      } else if (aa.depth == 0) {
+        write_image(out, render(tracer, settings.threads, nullptr, rows));
+      } else {
+        // Antialiased EXR: also the samples traced for each pixel.
+        Framebuffer fb(width, height);
+        ExtraChannel samples{"samples", std::vector<float>(static_cast<std::size_t>(width) * height)};
+        render_rows(
+            tracer, settings.threads,
+            [&](int j, std::span<const PixelSample> row) {
+              for (int i = 0; i < width; ++i) {
+                fb.set(i, j, row[i]);
+                samples.values[static_cast<std::size_t>(j) * width + i] = static_cast<float>(row[i].samples);
+              }
+            },
+            nullptr, rows, aa);
+        write_image(out, fb, {samples});
+      }
+      if (frames > 1) progress.advance(1);
     }
+    outputs.commit();
     return 0;
   };
 }

@@ -19,7 +19,6 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
-#include <random>
 #include <stdexcept>
 
 namespace capsim {
@@ -30,28 +29,6 @@ std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
-}
-
-// A hidden name beside the target that no other writer uses; renaming it over
-// the target on success means a reader never sees a half-written image.
-std::filesystem::path temporary_beside(const std::filesystem::path& target) {
-  static thread_local std::mt19937_64 rng{std::random_device{}()};
-  return target.parent_path() / fmt::format(".{}.{:016x}.tmp", target.filename().string(), rng());
-}
-
-// Writes through write(tmp) and renames tmp to path; removes tmp on failure.
-template <class Write>
-void write_atomically(const std::string& path, Write write) {
-  const std::filesystem::path target(path);
-  const std::filesystem::path tmp = temporary_beside(target);
-  try {
-    write(tmp.string());
-    std::filesystem::rename(tmp, target);
-  } catch (...) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw;
-  }
 }
 
 // The PNG image data: every row under the Sub filter (each byte less the same
@@ -81,19 +58,52 @@ std::vector<unsigned char> png_image_data(int width, int height, const unsigned 
   return data;
 }
 
+// Where libpng's output goes, and what went wrong: the first write error's
+// errno (libpng's own message for it is only "Write Error"), or libpng's message.
+struct PngSink {
+  std::FILE* file;
+  int write_errno = 0;
+  std::string message;
+};
+
+void png_write_to_sink(png_structp png, png_bytep data, png_size_t size) {
+  auto* sink = static_cast<PngSink*>(png_get_io_ptr(png));
+  if (std::fwrite(data, 1, size, sink->file) != size) {
+    sink->write_errno = errno;
+    png_error(png, "write error");
+  }
+}
+
+void png_flush_sink(png_structp png) {
+  auto* sink = static_cast<PngSink*>(png_get_io_ptr(png));
+  if (std::fflush(sink->file) != 0) {
+    sink->write_errno = errno;
+    png_error(png, "write error");
+  }
+}
+
+// Keeps libpng's message for the exception instead of printing it.
+[[noreturn]] void png_keep_error(png_structp png, png_const_charp message) {
+  static_cast<PngSink*>(png_get_error_ptr(png))->message = message;
+  png_longjmp(png, 1);
+}
+
 // libpng writes the signature, the header and colour chunks, and the CRCs; the
 // image data comes ready from png_image_data. libpng reports errors by longjmp;
-// this frame holds nothing that needs destroying, so jumping out of it is safe.
+// this frame holds nothing that needs destroying, so jumping out of it is safe,
+// and what the callbacks record lives in the caller's frame (an object of this
+// one changed after setjmp would be indeterminate after the jump).
 // Returns the error text or "".
-std::string png_write_chunks(std::FILE* f, int width, int height, const std::vector<unsigned char>& idat) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+std::string png_write_chunks(PngSink& sink, int width, int height, const std::vector<unsigned char>& idat) {
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_keep_error, nullptr);
   if (!png) return "cannot start the PNG encoder";
   png_infop info = png_create_info_struct(png);
   if (!info || setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
-    return "PNG encoding failed";
+    if (sink.write_errno != 0) return std::strerror(sink.write_errno);
+    return sink.message.empty() ? "PNG encoding failed" : "PNG encoding failed: " + sink.message;
   }
-  png_init_io(png, f);
+  png_set_write_fn(png, &sink, png_write_to_sink, png_flush_sink);
   png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -105,17 +115,21 @@ std::string png_write_chunks(std::FILE* f, int width, int height, const std::vec
   return "";
 }
 
-void write_png_file(const std::string& path, int width, int height, const unsigned char* rgb) {
+// Writes to out's temporary file; messages name its target.
+void write_png_file(const PendingFile& out, int width, int height, const unsigned char* rgb) {
+  const std::string& path = out.target();
   const std::vector<unsigned char> idat = png_image_data(width, height, rgb);
-  std::FILE* f = std::fopen(path.c_str(), "wb");
+  std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
   if (!f) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
-  const std::string error = png_write_chunks(f, width, height, idat);
+  PngSink sink{f, 0, ""};
+  const std::string error = png_write_chunks(sink, width, height, idat);
   const bool closed = std::fclose(f) == 0;
+  const int close_error = errno;
   if (!error.empty()) throw std::runtime_error(fmt::format("{}: {}", path, error));
-  if (!closed) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
+  if (!closed) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(close_error)));
 }
 
-void write_exr_file(const std::string& path, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
+void write_exr_file(const PendingFile& out, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
   const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
   // Planar copies, one per channel, in the order the header lists them.
   std::vector<std::pair<std::string, std::vector<float>>> planes;
@@ -136,11 +150,15 @@ void write_exr_file(const std::string& path, const Framebuffer& fb, const std::v
                                   sizeof(float) * static_cast<std::size_t>(fb.width)));
   }
   try {
-    Imf::OutputFile file(path.c_str(), header);
+    Imf::OutputFile file(out.temp_path().c_str(), header);
     file.setFrameBuffer(frame);
     file.writePixels(fb.height);
   } catch (const std::exception& e) {
-    throw std::runtime_error(fmt::format("{}: {}", path, e.what()));
+    // OpenEXR names the file it was given: name the target instead.
+    std::string message = e.what();
+    for (auto at = message.find(out.temp_path()); at != std::string::npos; at = message.find(out.temp_path()))
+      message.replace(at, out.temp_path().size(), out.target());
+    throw std::runtime_error(fmt::format("{}: {}", out.target(), message));
   }
 }
 
@@ -234,13 +252,43 @@ void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb) {
   }
 }
 
-void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
+std::uint64_t write_png_rgb8_memory(int width, int height) {
+  const std::uint64_t filtered = (static_cast<std::uint64_t>(width) * 3 + 1) * static_cast<std::uint64_t>(height);
+  const std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
+      libdeflate_alloc_compressor(1), libdeflate_free_compressor);
+  if (!compressor) throw std::bad_alloc();
+  return filtered + libdeflate_zlib_compress_bound(compressor.get(), filtered);
+}
+
+std::uint64_t write_image_memory(const std::string& path, int width, int height, std::size_t extra_channels) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  if (is_png_path(path)) return pixels * 3 + write_png_rgb8_memory(width, height);
+  return pixels * (6 + extra_channels) * sizeof(float);
+}
+
+void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<unsigned char>& rgb) {
   if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
-    throw std::logic_error(fmt::format("{}: {} bytes for a {}x{} RGB image", path, rgb.size(), width, height));
-  write_atomically(path, [&](const std::string& tmp) { write_png_file(tmp, width, height, rgb.data()); });
+    throw std::logic_error(
+        fmt::format("{}: {} bytes for a {}x{} RGB image", out.target(), rgb.size(), width, height));
+  write_png_file(out, width, height, rgb.data());
+}
+
+void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
+  PendingFile out(path);
+  write_png_rgb8(out, width, height, rgb);
+  out.commit();
 }
 
 void write_image(const std::string& path, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
+  if (!is_supported_image_path(path))
+    throw std::runtime_error(fmt::format("{}: unsupported image type (use .png or .exr)", path));
+  PendingFile out(path);
+  write_image(out, fb, extra);
+  out.commit();
+}
+
+void write_image(PendingFile& out, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
+  const std::string& path = out.target();
   if (!is_supported_image_path(path))
     throw std::runtime_error(fmt::format("{}: unsupported image type (use .png or .exr)", path));
   const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
@@ -254,9 +302,9 @@ void write_image(const std::string& path, const Framebuffer& fb, const std::vect
     std::vector<unsigned char> rgb(pixels * 3);
     for (std::size_t k = 0; k < pixels; ++k)
       for (int c = 0; c < 3; ++c) rgb[3 * k + c] = encode(fb.rgba[4 * k + c]);
-    write_png_rgb8(path, fb.width, fb.height, rgb);
+    write_png_rgb8(out, fb.width, fb.height, rgb);
   } else {
-    write_atomically(path, [&](const std::string& tmp) { write_exr_file(tmp, fb, extra); });
+    write_exr_file(out, fb, extra);
   }
 }
 

@@ -1,12 +1,15 @@
 // capsim: the Cellular Array Processor ray-tracing simulator.
 
 #include "capsim/scene.h"
+#include "capsim/temp_file_registry.h"
 #include "cli_commands.h"
+#include "cli_usage.h"
 
 #include <fmt/core.h>
 #include <malloc.h>
 
 #include <exception>
+#include <new>
 
 namespace {
 
@@ -25,28 +28,37 @@ void keep_freed_memory() {
 
 int main(int argc, char** argv) {
   keep_freed_memory();
+  capsim::remove_temp_files_on_signals();  // before TBB starts any thread
   CLI::App app{
       "capsim: a cycle-level simulator of Fujitsu's Cellular Array Processor (CAP)\n"
       "running the CSG ray tracer of Murakami, Sato and Hirota."};
-  app.require_subcommand(1);
+  app.require_subcommand(0, 1);  // none is a usage error, reported below in capsim's words
   app.set_version_flag("--version", "capsim 0.1.0");
   const capsim::cli::Command render = capsim::cli::add_render_command(app);
   const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app);
 
+  using capsim::cli::UsageError;
   try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& e) {
-    return app.exit(e);
-  }
-  try {
+    try {
+      app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+      if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) return app.exit(e);  // --help, --version
+      throw UsageError(capsim::cli::describe_parse_error(app, e));
+    }
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("simulate")) return simulate();
+    throw UsageError("a command is required (accepted: render, simulate; capsim --help describes them)");
+  } catch (const UsageError& e) {
+    fmt::print(stderr, "{}: {}\n", capsim::cli::command_name(app), e.what());
+    return 2;
   } catch (const capsim::SceneError& e) {
     fmt::print(stderr, "{}\n", e.what());  // FILE:LINE:COL: message, as compilers print
+    return 1;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "{}: out of memory\n", capsim::cli::command_name(app));
     return 1;
   } catch (const std::exception& e) {
     fmt::print(stderr, "capsim: {}\n", e.what());
     return 1;
   }
-  return 1;
 }

@@ -9,8 +9,6 @@ namespace capsim {
 
 namespace {
 
-constexpr int kMaxImageSide = 16384;
-
 SourceLoc scene_start(const Scene& scene) {
   SourceLoc loc = scene.root.loc;
   if (loc.line == 0) {
@@ -43,6 +41,12 @@ Camera default_camera(const Aabb& bounds, int width, int height) {
   return cam;
 }
 
+ImageSize image_size(const Scene& scene, const PrepareOptions& options) {
+  if (options.width > 0) return {options.width, options.height};
+  if (scene.camera) return {scene.camera->width, scene.camera->height};
+  return {512, 512};
+}
+
 PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   PreparedScene ps;
   const SourceLoc start = scene_start(scene);
@@ -71,20 +75,29 @@ PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   const int n = options.grid > 0 ? options.grid : auto_grid_divisions(placed);
   ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts);
 
+  const ImageSize size = image_size(scene, options);
   if (scene.camera) {
     ps.camera = *scene.camera;
-    if (options.width > 0) {
-      ps.camera.width = options.width;
-      ps.camera.height = options.height;
-    }
+    ps.camera.width = size.width;
+    ps.camera.height = size.height;
   } else {
-    ps.camera = default_camera(universe, options.width > 0 ? options.width : 512,
-                               options.height > 0 ? options.height : 512);
+    ps.camera = default_camera(universe, size.width, size.height);
   }
   ps.lights = scene.lights;
   if (ps.lights.empty()) ps.lights.push_back({ps.camera.eye, glm::dvec3(1)});
   ps.scene = std::move(scene);
   return ps;
+}
+
+void frame_sequence(std::vector<PreparedScene>& frames) {
+  if (frames.size() < 2) return;
+  Aabb bounds;
+  for (const PreparedScene& f : frames) bounds.extend(universe_of(f.prims, f.placed));
+  for (PreparedScene& f : frames) {
+    if (f.scene.camera) continue;
+    f.camera = default_camera(bounds, f.camera.width, f.camera.height);
+    if (f.scene.lights.empty()) f.lights = {{f.camera.eye, glm::dvec3(1)}};
+  }
 }
 
 }  // namespace capsim

@@ -1,5 +1,7 @@
 #include "capsim/render.h"
 
+#include "capsim/host_threads.h"
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -13,6 +15,10 @@ Framebuffer::Framebuffer(int w, int h)
       rgba(static_cast<std::size_t>(w) * h * 4, 0.0f),
       depth(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity()),
       id(static_cast<std::size_t>(w) * h, -1.0f) {}
+
+std::uint64_t Framebuffer::bytes(int w, int h) {
+  return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * (4 + 1 + 1) * sizeof(float);
+}
 
 void Framebuffer::set(int i, int j, const PixelSample& s) {
   const std::size_t k = static_cast<std::size_t>(j) * width + i;
@@ -29,7 +35,7 @@ namespace {
 // Runs body(rows) over the rows [0, count) on `threads` host threads.
 template <class Body>
 void parallel_rows(int threads, int count, Body body) {
-  tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+  tbb::task_arena arena(host_arena_concurrency(threads));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
   });

@@ -17,7 +17,8 @@
 namespace capsim::testing {
 
 struct RunResult {
-  int status = -1;  // exit status
+  int status = -1;  // exit status; -1 if a signal ended the process
+  int signal = 0;   // the signal that ended it, if one did
   std::string out;  // stdout
   std::string err;  // stderr
 };
@@ -50,12 +51,15 @@ class TempDir {
 };
 
 // args are passed through the shell as written; quote paths with spaces.
-inline RunResult run_capsim(const std::string& args, const TempDir& dir) {
+// shell_setup, if given, runs in that shell first (e.g. "ulimit -f 2;"), and
+// capsim then replaces the shell, so a signal that ends it is reported.
+inline RunResult run_capsim(const std::string& args, const TempDir& dir, const std::string& shell_setup = "") {
   const std::string out = dir / ".stdout", err = dir / ".stderr";
-  const std::string cmd = std::string(CAPSIM_EXE) + " " + args + " >" + out + " 2>" + err;
+  const std::string cmd = shell_setup + " exec " + CAPSIM_EXE + " " + args + " >" + out + " 2>" + err;
   const int raw = std::system(cmd.c_str());
   RunResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.signal = WIFSIGNALED(raw) ? WTERMSIG(raw) : 0;
   r.out = read_file(out);
   r.err = read_file(err);
   std::filesystem::remove(out);

@@ -102,7 +102,7 @@ TEST(CliSimulate, BadOptionsFailWithAMessage) {
                         {"--heatmap " + (dir / "h.jpg"), ".png"}};
   for (const Case& c : cases) {
     const RunResult r = run_capsim(base + c.args, dir);
-    EXPECT_NE(r.status, 0) << c.args;
+    EXPECT_EQ(r.status, 2) << c.args;
     EXPECT_NE(r.err.find(c.message), std::string::npos) << c.args << ": " << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "s.png")) << c.args;
   }

@@ -3,12 +3,14 @@
 // the file, libdeflate for the image data);
 // .exr is linear float R, G, B, A, Z (distance from the eye, +inf on a miss) and
 // id (float primitive index, -1 on a miss), plus any extra channels (OpenEXR).
-// The file is written under a temporary name and renamed only on success.
+// The file is written under a temporary name and renamed only on success
+// (PendingFile).
 //
 // These libraries rather than OpenImageIO: linking OpenImageIO loads some
 // 250 shared libraries at every start of the program (about half a second),
 // which would cost more than tracing a megapixel.
 
+#include "capsim/pending_file.h"
 #include "capsim/render.h"
 
 #include <span>
@@ -27,6 +29,19 @@ struct ExtraChannel {
 void write_image(const std::string& path, const Framebuffer& fb,
                  const std::vector<ExtraChannel>& extra = {});
 
+// The same into a pending file (its target's extension chooses the format),
+// which the caller commits; messages name the target.
+void write_image(PendingFile& out, const Framebuffer& fb, const std::vector<ExtraChannel>& extra = {});
+
+// The working memory write_image takes for a width x height image with
+// extra_channels extra channels, beyond the framebuffer and channels it is
+// given: for a PNG the 8-bit copy, the filtered rows and the compressed data
+// (write_png_rgb8_memory), for an EXR a planar copy of every channel.
+std::uint64_t write_image_memory(const std::string& path, int width, int height, std::size_t extra_channels);
+
+// The working memory write_png_rgb8 takes beyond its RGB bytes.
+std::uint64_t write_png_rgb8_memory(int width, int height);
+
 // True for the extensions write_image accepts (.png, .exr; any case).
 bool is_supported_image_path(const std::string& path);
 
@@ -44,5 +59,6 @@ void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb);
 // under a temporary name and renamed on success; throws std::runtime_error.
 void write_png_rgb8(const std::string& path, int width, int height,
                     const std::vector<unsigned char>& rgb);
+void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<unsigned char>& rgb);
 
 }  // namespace capsim

@@ -10,6 +10,10 @@
 
 namespace capsim {
 
+// The largest image side, in pixels, the tracer takes (as --size and as the
+// scene camera's size).
+inline constexpr int kMaxImageSide = 16384;
+
 struct PrepareOptions {
   int grid = 0;        // divisions per axis; 0 = auto_grid_divisions
   int width = 0;       // 0 = the camera's (or the default 512)
@@ -32,7 +36,20 @@ struct PreparedScene {
 // degree vertical field, far enough that the bounding sphere fits the view.
 Camera default_camera(const Aabb& bounds, int width, int height);
 
+// The image size prepare_scene gives the camera: options' size if set, else the
+// scene camera's, else 512x512.
+struct ImageSize {
+  int width = 0, height = 0;
+};
+ImageSize image_size(const Scene& scene, const PrepareOptions& options);
+
 // Throws SceneError for a scene with nothing to draw or a size out of range.
 PreparedScene prepare_scene(Scene scene, const PrepareOptions& options);
+
+// The frames of one sequence seen as one view: every frame whose scene has no
+// camera statement gets the camera that frames the bounds of all the frames
+// (default_camera at its own image size) and, without light statements, the
+// light at that camera's eye; so the view does not jump between frames.
+void frame_sequence(std::vector<PreparedScene>& frames);
 
 }  // namespace capsim

@@ -6,6 +6,7 @@
 #include "capsim/progress.h"
 #include "capsim/tracer.h"
 
+#include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
@@ -21,6 +22,9 @@ struct Framebuffer {
   Framebuffer() = default;
   Framebuffer(int w, int h);
   void set(int i, int j, const PixelSample& s);
+
+  // The bytes the buffers of a w x h framebuffer hold.
+  static std::uint64_t bytes(int w, int h);
 };
 
 struct RenderStats {

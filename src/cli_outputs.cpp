@@ -1,0 +1,67 @@
+#include "cli_outputs.h"
+
+#include "cli_usage.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+namespace capsim::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// Whether two paths name the same file: the same path once symbolic links,
+// "." and ".." are resolved, or, for files that exist, the same inode (hard links).
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  if (fs::equivalent(a, b, ec)) return true;
+  const auto resolved = [](const std::string& p) {
+    std::error_code e;
+    const fs::path absolute = fs::absolute(p, e);
+    const fs::path canonical = fs::weakly_canonical(absolute, e);
+    return e ? absolute.lexically_normal() : canonical;
+  };
+  return resolved(a) == resolved(b);
+}
+
+}  // namespace
+
+StagedOutputs::StagedOutputs(const std::vector<OutputOption>& outputs, const std::vector<std::string>& inputs) {
+  std::vector<const OutputOption*> given;
+  for (const OutputOption& o : outputs)
+    if (!o.path.empty()) given.push_back(&o);
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const OutputOption& o = *given[i];
+    for (std::size_t j = 0; j < i; ++j)
+      if (same_file(o.path, given[j]->path))
+        throw UsageError(fmt::format("{} {} is the same file as {}: every output needs a file of its own", o.option,
+                                     shown(o.path), given[j]->option));
+    for (const std::string& input : inputs)
+      if (same_file(o.path, input))
+        throw UsageError(fmt::format("{} {} is an input of the command; writing it would replace it", o.option,
+                                     shown(o.path)));
+  }
+  files_.reserve(given.size());
+  for (const OutputOption* o : given) {
+    try {
+      files_.emplace_back(o->path);
+    } catch (const std::runtime_error& e) {
+      throw UsageError(fmt::format("{} {}", o->option, e.what()));
+    }
+    options_.push_back(o->option);
+  }
+}
+
+PendingFile& StagedOutputs::operator[](const std::string& option) {
+  const auto at = std::find(options_.begin(), options_.end(), option);
+  if (at == options_.end()) throw std::logic_error(fmt::format("no output {} was staged", option));
+  return files_[static_cast<std::size_t>(at - options_.begin())];
+}
+
+void StagedOutputs::commit() { commit_all(files_); }
+
+}  // namespace capsim::cli

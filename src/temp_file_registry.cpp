@@ -1,0 +1,77 @@
+#include "capsim/temp_file_registry.h"
+
+#include <limits.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstring>
+
+namespace capsim {
+
+namespace {
+
+// A command has at most four outputs; in-process users (tests) a few more.
+constexpr int kSlots = 1024;  // a sequence stages one output per frame
+
+enum SlotState : int { kFree, kFilling, kArmed };
+
+struct Slot {
+  std::atomic<int> state{kFree};
+  char path[PATH_MAX];
+};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slot states");
+
+Slot slots[kSlots];
+
+constexpr int kSignals[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGPIPE, SIGXCPU, SIGXFSZ};
+
+// A slot is rewritten only after it went back to kFree, so a handler that sees
+// kArmed reads a complete path. (A slot freed and filled again, on another
+// thread, while the handler runs could still be read mid-change; the window is
+// a few instructions, and its worst outcome is a failed unlink.)
+extern "C" void remove_temp_files_and_reraise(int signal_number) {
+  const int saved_errno = errno;
+  for (Slot& slot : slots)
+    if (slot.state.load(std::memory_order_acquire) == kArmed) ::unlink(slot.path);
+  errno = saved_errno;
+  // SA_RESETHAND restored the default action on entry; the signal, blocked
+  // while this handler runs, is delivered again when it returns.
+  ::raise(signal_number);
+}
+
+}  // namespace
+
+int register_temp_file(const std::string& path) {
+  if (path.size() >= PATH_MAX) return -1;
+  for (int i = 0; i < kSlots; ++i) {
+    int expected = kFree;
+    if (slots[i].state.compare_exchange_strong(expected, kFilling, std::memory_order_acquire)) {
+      std::memcpy(slots[i].path, path.c_str(), path.size() + 1);
+      slots[i].state.store(kArmed, std::memory_order_release);
+      return i;
+    }
+  }
+  return -1;
+}
+
+void unregister_temp_file(int slot) {
+  if (slot >= 0 && slot < kSlots) slots[slot].state.store(kFree, std::memory_order_release);
+}
+
+void remove_temp_files_on_signals() {
+  struct sigaction action {};
+  action.sa_handler = remove_temp_files_and_reraise;
+  action.sa_flags = SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  // One handler at a time: a second signal waits until the first has done.
+  for (const int s : kSignals) sigaddset(&action.sa_mask, s);
+  for (const int s : kSignals) {
+    struct sigaction current {};
+    if (sigaction(s, nullptr, &current) != 0 || current.sa_handler == SIG_IGN) continue;
+    sigaction(s, &action, nullptr);
+  }
+}
+
+}  // namespace capsim

@@ -1,0 +1,167 @@
+// Usage errors of the command line: every one exits with status 2 and prints one
+// line that names the option (or command) at fault and what it accepts; nothing
+// is written. Scene errors keep status 1 (cli_render_test.cpp).
+
+#include "cli_run.h"
+
+using namespace capsim::testing;
+
+namespace {
+
+const std::string kBalls = scene_path("balls.csg");
+
+struct UsageCase {
+  // OUT stands for a path in the test's directory and BALLS for scenes/balls.csg.
+  std::string args;     // after "capsim"
+  std::string message;  // the whole line printed, without its newline
+};
+void PrintTo(const UsageCase& c, std::ostream* os) { *os << c.args; }
+
+std::string replace_all(std::string text, const std::string& from, const std::string& to) {
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+class CliUsageError : public ::testing::TestWithParam<UsageCase> {};
+
+TEST_P(CliUsageError, ExitsTwoWithOneLineNamingTheOptionAndItsRange) {
+  TempDir dir;
+  const auto in_test = [&](const std::string& text) {
+    return replace_all(replace_all(text, "OUT", dir / "out"), "BALLS", kBalls);
+  };
+  const RunResult r = run_capsim(in_test(GetParam().args), dir);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(r.err, in_test(GetParam().message) + "\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0) << "something was written";
+}
+
+const char* const kSizeRange = "(accepted: WxH, W and H whole numbers from 1 to 16384, e.g. 640x480)";
+const char* const kGridRange = "(accepted: 1 to 256, or auto)";
+const char* const kThreadsRange = "(accepted: 0 to 1024; 0 = all hardware threads)";
+const char* const kCellsRange = "(accepted: RxC, R and C whole numbers from 1 to 32, e.g. 8x8)";
+
+std::string with(const std::string& a, const std::string& b) { return a + " " + b; }
+
+std::string case_name(const ::testing::TestParamInfo<UsageCase>& info) {
+  std::string name;
+  for (char c : info.param.args) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return name.empty() ? "no_arguments" : name;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Commands, CliUsageError,
+    ::testing::Values(
+        UsageCase{"", "capsim: a command is required (accepted: render, simulate; capsim --help describes them)"},
+        UsageCase{"rendr BALLS -o OUT.png",
+                  "capsim: unknown command rendr; did you mean render? (accepted: render, simulate)"},
+        UsageCase{"sim BALLS -o OUT.png",
+                  "capsim: unknown command sim; did you mean simulate? (accepted: render, simulate)"},
+        UsageCase{"draw BALLS", "capsim: unknown command draw (accepted: render, simulate)"},
+        UsageCase{"--threads 2 render BALLS -o OUT.png",
+                  "capsim render: --threads is an option of render: give it after the command's name"},
+        UsageCase{"--fast", "capsim: unknown option --fast (capsim itself takes only --help and --version; give "
+                            "options after the command: render, simulate)"}),
+    case_name);
+
+INSTANTIATE_TEST_SUITE_P(
+    Render, CliUsageError,
+    ::testing::Values(
+        UsageCase{"render", "capsim render: SCENE is required (accepted: one or more scene files in the CSG "
+                            "grammar of docs/scene-format.md (several are the frames of a sequence))"},
+        UsageCase{"render BALLS", "capsim render: -o/--output is required (accepted: a path ending in .png or .exr)"},
+        UsageCase{"render BALLS -o OUT.jpg",
+                  "capsim render: --output OUT.jpg has an unsupported image type (accepted: a path ending in "
+                  ".png or .exr)"},
+        UsageCase{"render BALLS -o OUT.png --size", with("capsim render: --size needs a value", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --size 100", with("capsim render: --size 100 is not WxH", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --size 64x", with("capsim render: --size 64x is not WxH", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --size 0x10", with("capsim render: --size 0x10 is out of range", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --size 16385x16",
+                  with("capsim render: --size 16385x16 is out of range", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --size 16x99999999999",
+                  with("capsim render: --size 16x99999999999 is out of range", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --size 8x8 --size 9x9",
+                  with("capsim render: --size is given more than once", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --grid many", with("capsim render: --grid many is not a whole number", kGridRange)},
+        UsageCase{"render BALLS -o OUT.png --grid 0", with("capsim render: --grid 0 is out of range", kGridRange)},
+        UsageCase{"render BALLS -o OUT.png --grid 257", with("capsim render: --grid 257 is out of range", kGridRange)},
+        UsageCase{"render BALLS -o OUT.png --threads -1", with("capsim render: --threads -1 is out of range", kThreadsRange)},
+        UsageCase{"render BALLS -o OUT.png --threads 1.5",
+                  with("capsim render: --threads 1.5 is not a whole number", kThreadsRange)},
+        UsageCase{"render BALLS -o OUT.png --threads 100000",
+                  with("capsim render: --threads 100000 is out of range", kThreadsRange)},
+        UsageCase{"render BALLS -o OUT.png --threads 99999999999999999999",
+                  with("capsim render: --threads 99999999999999999999 is out of range", kThreadsRange)},
+        UsageCase{"render BALLS -o OUT.png --primary-only=abc",
+                  "capsim render: --primary-only abc is not a valid value (accepted: no value, or true or false)"},
+        UsageCase{"render BALLS -o OUT.png --treads 2",
+                  "capsim render: unknown option --treads; did you mean --threads? (capsim render --help lists "
+                  "every option)"},
+        UsageCase{"render BALLS -o OUT.png --cells 2x2",
+                  "capsim render: unknown option --cells (capsim render --help lists every option)"},
+        UsageCase{"render BALLS -o OUT.png --aa 9",
+                  "capsim render: --aa 9 is out of range (accepted: 0 to 8; 0 = one sample at each pixel centre)"}),
+    case_name);
+
+INSTANTIATE_TEST_SUITE_P(
+    Simulate, CliUsageError,
+    ::testing::Values(
+        UsageCase{"simulate", "capsim simulate: SCENE is required (accepted: one or more scene files in the CSG "
+                              "grammar of docs/scene-format.md (several are the frames of a sequence))"},
+        UsageCase{"simulate BALLS --size 8x8",
+                  "capsim simulate: -o/--output is required (accepted: a path ending in .png or .exr)"},
+        UsageCase{"simulate BALLS -o OUT.png --size x8", with("capsim simulate: --size x8 is not WxH", kSizeRange)},
+        UsageCase{"simulate BALLS -o OUT.png --grid -3", with("capsim simulate: --grid -3 is out of range", kGridRange)},
+        UsageCase{"simulate BALLS -o OUT.png --threads ''",
+                  with("capsim simulate: --threads '' is not a whole number", kThreadsRange)},
+        UsageCase{"simulate BALLS -o OUT.png --cells 0x8", with("capsim simulate: --cells 0x8 is out of range", kCellsRange)},
+        UsageCase{"simulate BALLS -o OUT.png --cells 33x1", with("capsim simulate: --cells 33x1 is out of range", kCellsRange)},
+        UsageCase{"simulate BALLS -o OUT.png --cells 8by8", with("capsim simulate: --cells 8by8 is not RxC", kCellsRange)},
+        UsageCase{"simulate BALLS -o OUT.png --cells", with("capsim simulate: --cells needs a value", kCellsRange)},
+        UsageCase{"simulate BALLS -o OUT.png --mode diagonal",
+                  "capsim simulate: --mode diagonal is not a pixel mode (accepted: block, line or dot)"},
+        UsageCase{"simulate BALLS -o OUT.png --profile no-such-profile",
+                  "capsim simulate: --profile no-such-profile is neither a built-in profile nor a readable file "
+                  "(accepted: cap, m380 or a profile JSON file as docs/simulation.md describes)"},
+        UsageCase{"simulate BALLS -o OUT.png --heatmap OUT.jpg",
+                  "capsim simulate: --heatmap OUT.jpg is not a .png path (accepted: a path ending in .png)"},
+        UsageCase{"simulate BALLS -o OUT.png --report", "capsim simulate: --report needs a value (accepted: a file path)"},
+        UsageCase{"simulate BALLS -o OUT.png --trace", "capsim simulate: --trace needs a value (accepted: a file path)"},
+        UsageCase{"simulate BALLS -o OUT.png --cell 2x2",
+                  "capsim simulate: unknown option --cell; did you mean --cells? (capsim simulate --help lists "
+                  "every option)"}),
+    case_name);
+
+}  // namespace
+
+TEST(CliUsage, ProfileThatIsADirectoryIsAUsageError) {
+  TempDir dir;
+  const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --profile " + dir.path().string(), dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "capsim simulate: --profile " + dir.path().string() +
+                       " is neither a built-in profile nor a readable file (accepted: cap, m380 or a profile JSON "
+                       "file as docs/simulation.md describes)\n");
+}
+
+TEST(CliUsage, TheLargestThreadCountRunsWithoutAWarning) {
+  // More threads than the host has run as many as it has: TBB is never asked
+  // for more workers than it can give, so it prints nothing.
+  TempDir dir;
+  for (const std::string command : {"render", "simulate"}) {
+    const RunResult r = run_capsim(command + " " + kBalls + " -o " + (dir / "out.png") + " --size 16x16 --threads 1024", dir);
+    EXPECT_EQ(r.status, 0) << command;
+    EXPECT_EQ(r.err, "") << command;
+  }
+}
+
+TEST(CliUsage, HelpAndVersionStillExitZero) {
+  TempDir dir;
+  for (const std::string args : {"--help", "render --help", "simulate --help", "--version"}) {
+    const RunResult r = run_capsim(args, dir);
+    EXPECT_EQ(r.status, 0) << args;
+    EXPECT_NE(r.out, "") << args;
+    EXPECT_EQ(r.err, "") << args;
+  }
+}
