@@ -8,29 +8,26 @@ namespace capsim::sim {
 
 namespace {
 
-// One corner on its way: from the cell that has it to the cell that takes it in.
-struct Leg {
-  CellId from, to;
-  CornerIndex corner;
-  auto operator<=>(const Leg&) const = default;
-};
-
-// Sorted, unique legs -> one message per (from, to), per sending cell.
-std::vector<std::vector<CornerMessage>> group(std::vector<Leg>& legs, int cell_count,
-                                              std::vector<int>& receives) {
-  std::sort(legs.begin(), legs.end());
-  legs.erase(std::unique(legs.begin(), legs.end()), legs.end());
-  std::vector<std::vector<CornerMessage>> sends(cell_count);
-  receives.assign(cell_count, 0);
-  for (const Leg& l : legs) {
-    auto& out = sends[l.from];
-    if (out.empty() || out.back().to != l.to) {
-      out.push_back({l.from, l.to, {}});
-      ++receives[l.to];
-    }
-    out.back().corners.push_back(l.corner);
+// Appends corner c to the message from `from` to `to` in sends[from], unless it
+// was the last corner added there (a corner reaches a relaying cell once, for
+// every cell it relays it to).
+void add(std::vector<std::vector<CornerMessage>>& sends, CellId from, CellId to, CornerIndex c) {
+  std::vector<CornerMessage>& out = sends[from];
+  auto m = std::find_if(out.begin(), out.end(), [to](const CornerMessage& x) { return x.to == to; });
+  if (m == out.end()) {
+    out.push_back({from, to, {}});
+    m = out.end() - 1;
   }
-  return sends;
+  if (m->corners.empty() || m->corners.back() != c) m->corners.push_back(c);
+}
+
+// Each cell's messages in order of destination; counts what each cell receives.
+void finish(std::vector<std::vector<CornerMessage>>& sends, std::vector<int>& receives) {
+  receives.assign(sends.size(), 0);
+  for (auto& out : sends) {
+    std::sort(out.begin(), out.end(), [](const CornerMessage& a, const CornerMessage& b) { return a.to < b.to; });
+    for (const CornerMessage& m : out) ++receives[m.to];
+  }
 }
 
 }  // namespace
@@ -43,34 +40,45 @@ CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int firs
       corners_per_frame_(static_cast<CornerIndex>(width_ + 1) * static_cast<CornerIndex>(height_ + 1)) {
   const CellGrid& grid = frames_[0]->grid();
   const int cells = grid.cell_count();
-  std::vector<Leg> vertical, horizontal;
-  std::vector<std::pair<CellId, CornerIndex>> needs;
+  needs_.resize(cells);
+  vertical_.resize(cells);
+  horizontal_.resize(cells);
+  // Corner by corner, in ascending order, so every list comes out ascending
+  // with no sort: the cells that need a corner are those of the pixels whose
+  // right, lower or lower-right corner it is, other than its owner's.
   for (std::size_t f = 0; f < frames_.size(); ++f) {
     const WindowLayout& layout = *frames_[f];
     if (layout.width() != width_ || layout.height() != height_ || !(layout.grid() == grid))
       throw std::logic_error("the frames of one exchange need one screen size and cell grid");
     const OwnerTable owners(layout);
-    for (int y = 0; y < height_; ++y)
-      for (int x = 0; x < width_; ++x) {
-        const CellId n = owners.owner(x, y).cell;
-        const int corner_xy[3][2] = {{x + 1, y}, {x, y + 1}, {x + 1, y + 1}};
-        for (const auto& [cx, cy] : corner_xy) {
-          const CornerIndex c = index(first_frame_ + static_cast<int>(f), cx, cy);
-          const CellId o = owner(c);
-          if (o == n) continue;
-          needs.emplace_back(n, c);
+    auto pixel_owner = [&](int x, int y) { return owners.owner(x, y).cell; };
+    for (int y = 0; y <= height_; ++y)
+      for (int x = 0; x <= width_; ++x) {
+        const CornerIndex c = index(first_frame_ + static_cast<int>(f), x, y);
+        const CellId o = pixel_owner(std::min(x, width_ - 1), std::min(y, height_ - 1));
+        CellId needers[3];
+        int count = 0;
+        auto need = [&](int px, int py) {
+          if (px < 0 || py < 0 || px >= width_ || py >= height_) return;
+          const CellId n = pixel_owner(px, py);
+          if (n == o || std::find(needers, needers + count, n) != needers + count) return;
+          needers[count++] = n;
+        };
+        need(x - 1, y - 1);
+        need(x, y - 1);
+        need(x - 1, y);
+        std::sort(needers, needers + count);
+        for (int i = 0; i < count; ++i) {
+          const CellId n = needers[i];
+          needs_[n].push_back(c);
           const CellId m = grid.id({grid.position(n).row, grid.position(o).col});
-          if (m != o) vertical.push_back({o, m, c});
-          if (m != n) horizontal.push_back({m, n, c});
+          if (m != o) add(vertical_, o, m, c);
+          if (m != n) add(horizontal_, m, n, c);
         }
       }
   }
-  std::sort(needs.begin(), needs.end());
-  needs.erase(std::unique(needs.begin(), needs.end()), needs.end());
-  needs_.resize(cells);
-  for (const auto& [n, c] : needs) needs_[n].push_back(c);
-  vertical_ = group(vertical, cells, vertical_in_);
-  horizontal_ = group(horizontal, cells, horizontal_in_);
+  finish(vertical_, vertical_in_);
+  finish(horizontal_, horizontal_in_);
 }
 
 CellId CornerExchange::owner(CornerIndex corner) const {

@@ -137,11 +137,10 @@ std::uint64_t simulation_memory(const MachineConfig& config, int width, int heig
   if (aa) {
     // One frame's corners (and their cycles, for a float screen) while it is traced.
     bytes += corners * (sizeof(ScreenSample) + (config.screen == ScreenFormat::Float ? sizeof(std::uint64_t) : 0));
-    // A unit's exchange plan while it is built: up to 3 corners needed per pixel,
-    // each as a need (8 bytes), a vertical and a horizontal leg (12 bytes each),
-    // and in the plan kept (4 bytes as a need, 4 in each of two messages).
+    // A unit's exchange plan: up to 3 corners needed from other cells per
+    // pixel, each kept as a need and in at most two messages (4 bytes each).
     const std::uint64_t unit = config.frame_average ? std::min<std::uint64_t>(frames, config.cells.cell_count()) : 1;
-    bytes += unit * pixels * 3 * (8 + 12 + 12 + 4 + 4 + 4);
+    bytes += unit * pixels * 3 * (4 + 4 + 4);
   }
   return bytes;
 }

@@ -70,9 +70,9 @@ TEST(MemoryEstimate, SimulateHoldsWhatEachScreenFormatNeedsPerPixel) {
   config.screen = sim::ScreenFormat::Float;
   EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * 61);
   // Antialiased: also samples per pixel (4 + 4), one frame's corners (24 and
-  // 8 for their cycles) and the exchange plan (3 x 44 a pixel).
+  // 8 for their cycles) and the exchange plan (3 x 12 a pixel).
   config.aa.depth = 2;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * (69 + 3 * 44) + 641u * 481 * 32);
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * (69 + 3 * 12) + 641u * 481 * 32);
 }
 
 }  // namespace
