@@ -101,10 +101,9 @@ Command add_simulate_command(CLI::App& app) {
     const PreparedScene scene = load_scene(settings, [screen](ImageSize size) {
       // The frame's peak, or the result with the written screen's working
       // memory (and, for an EXR, the copy of the cycles it carries).
-      const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
       const std::size_t extra = is_png_path(screen) ? 0 : 1;
       const std::uint64_t writing = sim::simulation_result_memory(size.width, size.height) +
-                                    extra * pixels * sizeof(float) +
+                                    extra * size.pixels() * sizeof(float) +
                                     write_image_memory(screen, size.width, size.height, extra);
       return std::max(sim::simulate_frame_memory(size.width, size.height), writing);
     });

@@ -20,9 +20,9 @@ Command add_render_command(CLI::App& app) {
     StagedOutputs outputs({{"--output", settings.output}}, {settings.scene});
     const bool png = is_png_path(settings.output);
     const PreparedScene scene = load_scene(settings, [png](ImageSize size) {
-      const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
-      return png ? pixels * 3 + write_png_rgb8_memory(size.width, size.height)
-                 : Framebuffer::bytes(size.width, size.height) + write_image_memory(".exr", size.width, size.height, 0);
+      // The 8-bit rows and their encoding, or the frame buffer and its writing.
+      if (png) return size.pixels() * 3 + write_png_rgb8_memory(size.width, size.height);
+      return Framebuffer::bytes(size.width, size.height) + write_image_memory(".exr", size.width, size.height, 0);
     });
     const Tracer tracer(scene, settings.trace);
     Progress progress("rendering", static_cast<std::uint64_t>(scene.camera.width) * scene.camera.height,
