@@ -110,7 +110,8 @@ TracerSettings check_tracer_options(const TracerOptions& o) {
     throw UsageError(fmt::format("-o/--output is required (accepted: {})", accepted_values("--output")));
   if (!is_supported_image_path(o.output)) refuse("--output", o.output, "has an unsupported image type");
   s.output = o.output;
-  if (!o.size.empty()) std::tie(s.prepare.width, s.prepare.height) = parse_pair_option("--size", o.size, "WxH", kMaxImageSide);
+  if (!o.size.empty())
+    std::tie(s.prepare.width, s.prepare.height) = parse_pair_option("--size", o.size, "WxH", kMaxImageSide);
   if (o.grid != "auto") s.prepare.grid = parse_whole_option("--grid", o.grid, 1, kMaxGridDivisions);
   s.threads = parse_whole_option("--threads", o.threads, 0, kMaxThreadsOption);
   if (!o.max_memory.empty()) s.max_memory = parse_bytes_option("--max-memory", o.max_memory);

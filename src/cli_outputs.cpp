@@ -38,8 +38,8 @@ StagedOutputs::StagedOutputs(const std::vector<OutputOption>& outputs, const std
     const OutputOption& o = *given[i];
     for (std::size_t j = 0; j < i; ++j)
       if (same_file(o.path, given[j]->path))
-        throw UsageError(fmt::format("{} {} is the same file as {}: every output needs a file of its own", o.option,
-                                     shown(o.path), given[j]->option));
+        throw UsageError(fmt::format("{} {} is the same file as {}: every output needs a file of its own",
+                                     o.option, shown(o.path), given[j]->option));
     for (const std::string& input : inputs)
       if (same_file(o.path, input))
         throw UsageError(fmt::format("{} {} is an input of the command; writing it would replace it", o.option,

@@ -128,7 +128,8 @@ std::string describe_extras(const CLI::App& app) {
   const CLI::App& cmd = *parsed.front();
   std::vector<std::string> extra = cmd.remaining();
   for (const std::string& e : app.remaining()) extra.push_back(e);  // given before the command
-  const auto option = std::find_if(extra.begin(), extra.end(), [](const std::string& e) { return e.rfind("-", 0) == 0; });
+  const auto option =
+      std::find_if(extra.begin(), extra.end(), [](const std::string& e) { return e.rfind("-", 0) == 0; });
   const std::vector<std::string> known = option_names(cmd);
   if (option != extra.end() && std::find(known.begin(), known.end(), *option) != known.end())
     return fmt::format("{} is an option of {}: give it after the command's name", *option, cmd.get_name());

@@ -41,8 +41,8 @@ std::vector<std::string_view> lines(std::string_view text) {
 }
 
 // A limit file's value less a usage file's; nothing for "max" or unreadable files.
-void add_cgroup_limit(std::vector<MemoryLimit>& limits, const std::string& limit_file, const std::string& usage_file,
-                      const std::string& source) {
+void add_cgroup_limit(std::vector<MemoryLimit>& limits, const std::string& limit_file,
+                      const std::string& usage_file, const std::string& source) {
   const std::optional<std::uint64_t> limit = parse_u64(read_text(limit_file));
   if (!limit) return;  // absent, or "max"
   const std::uint64_t used = parse_u64(read_text(usage_file)).value_or(0);

@@ -16,7 +16,7 @@ TEST(Install, PutsTheProgramDocsAndScenesUnderThePrefix) {
 
   const std::filesystem::path root(prefix);
   EXPECT_TRUE(std::filesystem::is_regular_file(root / "share/doc/capsim/README.md"));
-  EXPECT_TRUE(std::filesystem::is_regular_file(root / "share/doc/capsim/scene-format.md"));
+  EXPECT_TRUE(std::filesystem::is_regular_file(root / "share/doc/capsim/docs/scene-format.md"));
   EXPECT_TRUE(std::filesystem::is_regular_file(root / "share/capsim/scenes/balls.csg"));
   const std::string capsim = (root / "bin/capsim").string();
   ASSERT_TRUE(std::filesystem::is_regular_file(capsim));

@@ -6,6 +6,7 @@
 #include "capsim/status_tree.h"
 #include "capsim/voxel_grid.h"
 
+#include <cstdint>
 #include <vector>
 
 namespace capsim {
@@ -40,6 +41,7 @@ Camera default_camera(const Aabb& bounds, int width, int height);
 // scene camera's, else 512x512.
 struct ImageSize {
   int width = 0, height = 0;
+  std::uint64_t pixels() const { return static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height); }
 };
 ImageSize image_size(const Scene& scene, const PrepareOptions& options);
 
