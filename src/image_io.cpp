@@ -85,7 +85,8 @@ std::vector<unsigned char> png_image_data(int width, int height, const unsigned 
 // image data comes ready from png_image_data. libpng reports errors by longjmp;
 // this frame holds nothing that needs destroying, so jumping out of it is safe.
 // Returns the error text or "".
-std::string png_write_chunks(std::FILE* f, int width, int height, const std::vector<unsigned char>& idat) {
+std::string png_write_chunks(std::vector<unsigned char>& out, int width, int height,
+                             const std::vector<unsigned char>& idat) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   if (!png) return "cannot start the PNG encoder";
   png_infop info = png_create_info_struct(png);
@@ -93,26 +94,29 @@ std::string png_write_chunks(std::FILE* f, int width, int height, const std::vec
     png_destroy_write_struct(&png, &info);
     return "PNG encoding failed";
   }
-  png_init_io(png, f);
+  png_set_write_fn(
+      png, &out,
+      [](png_structp p, png_bytep data, png_size_t size) {
+        auto* bytes = static_cast<std::vector<unsigned char>*>(png_get_io_ptr(p));
+        bytes->insert(bytes->end(), data, data + size);
+      },
+      nullptr);
   png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(png, info);
   png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"), idat.data(), idat.size());
   png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
-  png_write_flush(png);
   png_destroy_write_struct(&png, &info);
   return "";
 }
 
-void write_png_file(const std::string& path, int width, int height, const unsigned char* rgb) {
-  const std::vector<unsigned char> idat = png_image_data(width, height, rgb);
+void write_png_file(const std::string& path, const std::vector<unsigned char>& png) {
   std::FILE* f = std::fopen(path.c_str(), "wb");
   if (!f) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
-  const std::string error = png_write_chunks(f, width, height, idat);
+  const bool written = std::fwrite(png.data(), 1, png.size(), f) == png.size();
   const bool closed = std::fclose(f) == 0;
-  if (!error.empty()) throw std::runtime_error(fmt::format("{}: {}", path, error));
-  if (!closed) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
+  if (!written || !closed) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
 }
 
 void write_exr_file(const std::string& path, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
@@ -234,10 +238,34 @@ void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb) {
   }
 }
 
-void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
+std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vector<unsigned char>& rgb) {
   if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
-    throw std::logic_error(fmt::format("{}: {} bytes for a {}x{} RGB image", path, rgb.size(), width, height));
-  write_atomically(path, [&](const std::string& tmp) { write_png_file(tmp, width, height, rgb.data()); });
+    throw std::logic_error(fmt::format("{} bytes for a {}x{} RGB image", rgb.size(), width, height));
+  std::vector<unsigned char> png;
+  const std::string error = png_write_chunks(png, width, height, png_image_data(width, height, rgb.data()));
+  if (!error.empty()) throw std::runtime_error(error);
+  return png;
+}
+
+void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
+  std::vector<unsigned char> png;
+  try {
+    png = encode_png_rgb8(width, height, rgb);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(fmt::format("{}: {}", path, e.what()));
+  } catch (const std::logic_error& e) {
+    throw std::logic_error(fmt::format("{}: {}", path, e.what()));
+  }
+  write_atomically(path, [&](const std::string& tmp) { write_png_file(tmp, png); });
+}
+
+std::vector<unsigned char> srgb8_pixels(const Framebuffer& fb) {
+  const Srgb8Table& encode = srgb8_table();
+  const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
+  std::vector<unsigned char> rgb(pixels * 3);
+  for (std::size_t k = 0; k < pixels; ++k)
+    for (int c = 0; c < 3; ++c) rgb[3 * k + c] = encode(fb.rgba[4 * k + c]);
+  return rgb;
 }
 
 void write_image(const std::string& path, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
@@ -250,11 +278,7 @@ void write_image(const std::string& path, const Framebuffer& fb, const std::vect
 
   if (is_png_path(path)) {
     // 8-bit sRGB; the background is opaque, coverage lives in the EXR.
-    const Srgb8Table& encode = srgb8_table();
-    std::vector<unsigned char> rgb(pixels * 3);
-    for (std::size_t k = 0; k < pixels; ++k)
-      for (int c = 0; c < 3; ++c) rgb[3 * k + c] = encode(fb.rgba[4 * k + c]);
-    write_png_rgb8(path, fb.width, fb.height, rgb);
+    write_png_rgb8(path, fb.width, fb.height, srgb8_pixels(fb));
   } else {
     write_atomically(path, [&](const std::string& tmp) { write_exr_file(tmp, fb, extra); });
   }
