@@ -3,6 +3,7 @@
 #include "cli_commands.h"
 #include "cli_options.h"
 #include "heatmap.h"
+#include "html_report.h"
 #include "machine.h"
 #include "capsim/progress.h"
 #include "sim_report.h"
@@ -12,6 +13,7 @@
 
 #include <fmt/core.h>
 
+#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <stdexcept>
@@ -27,6 +29,7 @@ struct SimulateOptions {
   std::string report;   // JSON report path; empty = none
   std::string trace;    // Chrome trace-event JSON path; empty = none
   std::string heatmap;  // PNG path; empty = none
+  std::string html;     // HTML report path; empty = none
 };
 
 // Fails before any work if an output's directory does not exist.
@@ -35,6 +38,15 @@ void check_output_directory(const std::string& path) {
   const std::filesystem::path dir = std::filesystem::path(path).parent_path();
   if (!dir.empty() && !std::filesystem::is_directory(dir))
     throw std::invalid_argument(fmt::format("{}: directory {} does not exist", path, dir.string()));
+}
+
+// The options that decided the run, as a command line (the HTML report shows it).
+std::string command_line(const TracerOptions& o, const SimulateOptions& s, int width, int height) {
+  std::string line = fmt::format("capsim simulate {} -o {} --size {}x{} --grid {} --cells {} --mode {} --profile {}",
+                                 o.scene, o.output, width, height, o.grid, s.cells, s.mode, s.profile);
+  if (o.primary_only) line += " --primary-only";
+  if (o.aa_depth > 0) line += fmt::format(" --aa {} --aa-threshold {}", o.aa_depth, o.aa_threshold);
+  return line + fmt::format(" --threads {}", o.threads);
 }
 
 }  // namespace
@@ -61,6 +73,9 @@ Command add_simulate_command(CLI::App& app) {
   cmd->add_option("--trace", sim->trace,
                   "Write the timeline as Chrome trace-event JSON (opens in ui.perfetto.dev)");
   cmd->add_option("--heatmap", sim->heatmap, "Write a PNG of per-cell busy time on the cell grid");
+  cmd->add_option("--html", sim->html,
+                  "Write one self-contained HTML page of the run: the screen filling over simulated time, "
+                  "the cells, the timeline and the tables (docs/report.md)");
 
   return [opts, sim] {
     sim::MachineConfig config;
@@ -69,14 +84,19 @@ Command add_simulate_command(CLI::App& app) {
     config.profile = sim::load_cost_profile(sim->profile);
     config.aa = antialias_options(*opts);
     config.screen = is_png_path(opts->output) ? sim::ScreenFormat::Srgb8 : sim::ScreenFormat::Float;
+    config.completion_cycles = !sim->html.empty();
     if (!sim->heatmap.empty() && !is_png_path(sim->heatmap))
       throw std::invalid_argument(fmt::format("{}: the heat map is written as .png", sim->heatmap));
-    for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap}) check_output_directory(*path);
+    for (const std::string* path : {&sim->report, &sim->trace, &sim->heatmap, &sim->html})
+      check_output_directory(*path);
 
+    const auto started = std::chrono::steady_clock::now();
     const PreparedScene scene = load_scene(*opts);
     const Tracer tracer(scene, trace_options(*opts));
     const sim::SimulationResult result =
         sim::simulate_frame(tracer, config, opts->threads, Progress::stderr_is_terminal());
+    // Reading the scene, tracing and simulating: what the HTML report gives as the host's time.
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
 
     const sim::FrameScreen& screen = result.screens.at(0);
     if (config.screen == sim::ScreenFormat::Srgb8) {
@@ -86,14 +106,14 @@ Command add_simulate_command(CLI::App& app) {
       if (config.aa.depth > 0) extra.push_back({"samples", screen.pixel_samples});
       write_image(opts->output, screen.screen, extra);
     }
-    if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json(result).dump(2) + "\n");
-    if (!sim->trace.empty()) {
-      const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", sim::to_string(config.cells),
-                                           sim::to_string(config.mode), config.profile.name);
-      sim::write_text_file(sim->trace,
-                           result.timeline.to_chrome_trace(name, config.profile.clock_hz).dump() + "\n");
-    }
+    if (!sim->report.empty()) sim::write_text_file(sim->report, sim::report_json_text(result));
+    if (!sim->trace.empty()) sim::write_text_file(sim->trace, sim::chrome_trace_text(result));
     if (!sim->heatmap.empty()) write_image(sim->heatmap, sim::to_framebuffer(sim::render_heatmap(result)));
+    if (!sim->html.empty()) {
+      const sim::RunFacts facts{opts->scene, command_line(*opts, *sim, result.width, result.height), wall.count(),
+                                CAPSIM_VERSION};
+      sim::write_text_file(sim->html, sim::html_report(result, facts));
+    }
     fmt::print("{}", sim::format_report(result));
     return 0;
   };
