@@ -18,6 +18,7 @@ Cell::Cell(CellId id, int timeline_track, const Wiring& wiring)
   video_.reserve(wiring.frames.size());
   for (FrameWork& f : wiring.frames) video_.push_back(std::move(f.cells.at(id)));
   record_.frame_busy.resize(wiring.frames.size());
+  record_.frame_write_start.resize(wiring.frames.size());
 }
 
 namespace {
@@ -62,6 +63,7 @@ Process Cell::run() {
       // (the same time as pixel by pixel, without an event per pixel).
       for (int f = first; f < end; ++f) {
         const Cycles begin = wire_.kernel.now();
+        record_.frame_write_start[f] = begin;
         try {
           co_await wire_.kernel.delay(video_[f].work.total());
         } catch (const CycleOverflow& e) {
@@ -134,6 +136,7 @@ Process Cell::run() {
       const Cycles subdivide_start = wire_.kernel.now();
       for (int f = first; f < end; ++f) {
         const Cycles begin = wire_.kernel.now();
+        record_.frame_write_start[f] = begin;
         try {
           co_await wire_.kernel.delay(video_[f].subdivision_work.total());
         } catch (const CycleOverflow& e) {

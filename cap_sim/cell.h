@@ -33,6 +33,9 @@ struct CellRecord {
   CostBreakdown work;  // busy, by Table 4-3's processes
   std::vector<Cycles> frame_busy;   // per frame: the cycles it worked on it
   std::vector<Cycles> unit_finish;  // per distribution unit: when its "done" reached the host
+  // Per frame: when it began writing the frame's pixels into video memory, in
+  // video-memory order (tracing them; antialiased, subdividing them in phase 3).
+  std::vector<Cycles> frame_write_start;
 };
 
 class Cell {

@@ -5,6 +5,7 @@
 #include "cli_outputs.h"
 #include "cli_usage.h"
 #include "heatmap.h"
+#include "html_report.h"
 #include "machine.h"
 #include "capsim/progress.h"
 #include "sim_report.h"
@@ -13,8 +14,10 @@
 #include "capsim/image_io.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -31,8 +34,20 @@ struct SimulateOptions {
   std::string report;   // JSON report path; empty = none
   std::string trace;    // Chrome trace-event JSON path; empty = none
   std::string heatmap;  // PNG path; empty = none
+  std::string html;     // HTML report path; empty = none
   bool frame_average = false;
 };
+
+// The run's options as a command line, for the HTML report.
+std::string command_line(const TracerOptions& o, const SimulateOptions& s, int width, int height) {
+  std::string line = fmt::format("capsim simulate {} -o {} --size {}x{} --grid {} --cells {} --mode {} --profile {}",
+                                 fmt::join(o.scenes, " "), o.output, width, height, o.grid, s.cells, s.mode,
+                                 s.profile);
+  if (o.primary_only) line += " --primary-only";
+  if (o.aa != "0") line += fmt::format(" --aa {} --aa-threshold {}", o.aa, o.aa_threshold);
+  if (s.frame_average) line += " --frame-average";
+  return line + fmt::format(" --threads {}", o.threads);
+}
 
 bool is_builtin_profile(const std::string& value) {
   const std::vector<std::string> builtin = sim::builtin_profile_names();
@@ -90,6 +105,9 @@ Command add_simulate_command(CLI::App& app) {
   cmd->add_option("--trace", sim->trace,
                   "Write the timeline as Chrome trace-event JSON (opens in ui.perfetto.dev)");
   cmd->add_option("--heatmap", sim->heatmap, "Write a PNG of per-cell busy time on the cell grid");
+  cmd->add_option("--html", sim->html,
+                  "Write one self-contained HTML page of the run: the screen filling over simulated time, "
+                  "the cells, the timeline and the tables (docs/report.md)");
   cmd->add_flag("--frame-average", sim->frame_average,
                 "Frame-averaged distribution (dot mode): the dot pattern turns every frame, and the cells run "
                 "through groups of RxC frames without waiting for each other (docs/animation.md)");
@@ -107,11 +125,13 @@ Command add_simulate_command(CLI::App& app) {
     for (int k = 0; k < frames; ++k)
       staged.push_back({frame_output_option(k, frames), frame_output(settings.output, k, frames)});
     for (const OutputOption& o : std::vector<OutputOption>{
-             {"--report", sim->report}, {"--trace", sim->trace}, {"--heatmap", sim->heatmap}})
+             {"--report", sim->report}, {"--trace", sim->trace}, {"--heatmap", sim->heatmap}, {"--html", sim->html}})
       staged.push_back(o);
     StagedOutputs outputs(staged, inputs);
     config.profile = sim::load_cost_profile(sim->profile);
+    config.completion_cycles = !sim->html.empty();
 
+    const auto started = std::chrono::steady_clock::now();
     const std::vector<PreparedScene> scenes = load_scenes(settings, [config, png](ImageSize size, int count) {
       // The run's peak, or its result while a screen is written (a PNG
       // compresses the screen's bytes; an EXR copies its cycles and,
@@ -132,6 +152,8 @@ Command add_simulate_command(CLI::App& app) {
     }
     const sim::SimulationResult result =
         sim::simulate_frames(frame_tracers, config, settings.threads, Progress::stderr_is_terminal());
+    // Reading the scenes, tracing and simulating: what the HTML report gives as the host's time.
+    const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
 
     for (int k = 0; k < frames; ++k) {
       const sim::FrameScreen& screen = result.screens[k];
@@ -144,16 +166,16 @@ Command add_simulate_command(CLI::App& app) {
         write_image(out, screen.screen, extra);
       }
     }
-    if (!sim->report.empty())
-      sim::write_text_file(outputs["--report"], sim::report_json(result).dump(2) + "\n");
-    if (!sim->trace.empty()) {
-      const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", sim::to_string(config.cells),
-                                           sim::to_string(config.mode), config.profile.name);
-      sim::write_text_file(outputs["--trace"],
-                           result.timeline.to_chrome_trace(name, config.profile.clock_hz).dump() + "\n");
-    }
+    if (!sim->report.empty()) sim::write_text_file(outputs["--report"], sim::report_json_text(result));
+    if (!sim->trace.empty()) sim::write_text_file(outputs["--trace"], sim::chrome_trace_text(result));
     if (!sim->heatmap.empty())
       write_image(outputs["--heatmap"], sim::to_framebuffer(sim::render_heatmap(result)));
+    if (!sim->html.empty()) {
+      const sim::RunFacts facts{fmt::format("{}", fmt::join(settings.scenes, " ")),
+                                command_line(*opts, *sim, result.width, result.height), wall.count(),
+                                CAPSIM_VERSION};
+      sim::write_text_file(outputs["--html"], sim::html_report(result, facts));
+    }
     outputs.commit();
     fmt::print("{}", sim::format_report(result));
     return 0;

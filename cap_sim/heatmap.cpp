@@ -13,6 +13,8 @@ namespace {
 
 using Rgb = std::array<unsigned char, 3>;
 
+}  // namespace
+
 // Viridis at five evenly spaced stops; linear in between.
 Rgb viridis(double t) {
   static constexpr double kStops[5][3] = {
@@ -25,6 +27,8 @@ Rgb viridis(double t) {
     c[k] = static_cast<unsigned char>(std::lround(kStops[i][k] + f * (kStops[i + 1][k] - kStops[i][k])));
   return c;
 }
+
+namespace {
 
 // A 3x5 pixel font for the legend labels: digits, '.', 's', ' '.
 const char* glyph(char ch) {
@@ -120,6 +124,18 @@ RgbImage render_heatmap(const SimulationResult& r) {
   canvas.text(margin, label_y, lo_label, ink);
   canvas.text(margin + content_w - text_width(hi_label) + kFontScale, label_y, hi_label, ink);
   return canvas.take();
+}
+
+RgbImage render_completion_map(const std::vector<std::uint64_t>& completion, int width, int height,
+                               Cycles from, Cycles to) {
+  RgbImage image{width, height, std::vector<unsigned char>(completion.size() * 3)};
+  const double span = to > from ? static_cast<double>((to - from).count()) : 1.0;
+  for (std::size_t k = 0; k < completion.size(); ++k) {
+    const double t = completion[k] > from.count() ? static_cast<double>(completion[k] - from.count()) / span : 0.0;
+    const Rgb c = viridis(t);
+    std::copy(c.begin(), c.end(), image.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(k));
+  }
+  return image;
 }
 
 float srgb8_to_linear(unsigned char v) {

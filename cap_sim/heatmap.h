@@ -6,6 +6,8 @@
 
 #include "machine.h"
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,15 @@ struct RgbImage {
 };
 
 RgbImage render_heatmap(const SimulationResult& r);
+
+// The viridis scale at t, clamped to [0, 1]: dark blue at 0, yellow at 1.
+std::array<unsigned char, 3> viridis(double t);
+
+// When each pixel appeared, one image pixel a screen pixel: completion
+// (row-major, FrameScreen::completion_cycles) in viridis from `from` (dark
+// blue) to `to` (yellow). Precondition: completion.size() == width * height.
+RgbImage render_completion_map(const std::vector<std::uint64_t>& completion, int width, int height,
+                               Cycles from, Cycles to);
 
 // The image as a framebuffer whose sRGB encoding (write_image's PNG output) gives
 // back exactly these 8-bit colours.

@@ -58,10 +58,31 @@ std::vector<DistributionUnit> distribution_units(const std::vector<FrameWork>& f
   return units;
 }
 
+// When each screen pixel of a frame reached video memory: a cell writes its
+// pixels in video-memory order from its frame_write_start, pixel k when the
+// write cycles of pixels 0 to k have passed.
+std::vector<std::uint64_t> completion_cycles(const WindowLayout& layout,
+                                             const std::vector<std::unique_ptr<Cell>>& cells, int frame) {
+  std::vector<std::uint64_t> out(static_cast<std::size_t>(layout.width()) * layout.height());
+  for (const auto& cell : cells)
+    if (cell->video_memory(frame).write_cycles.size() !=
+        static_cast<std::size_t>(layout.window(cell->id()).pixel_count()))
+      throw std::logic_error("completion cycles need the write cycles traced ahead (trace_cells' keep_write_cycles)");
+  std::vector<std::uint64_t> clock(cells.size());
+  for (std::size_t c = 0; c < cells.size(); ++c) clock[c] = cells[c]->record().frame_write_start.at(frame).count();
+  // A cell's pixels come in video-memory order on one thread: its clock is its own.
+  for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
+    clock[c] += cells[c]->video_memory(frame).write_cycles[k];
+    out[s] = clock[c];
+  });
+  return out;
+}
+
 // Every video memory of a frame, composed as the video bus shows it.
 FrameScreen compose_frame(const WindowLayout& layout, const std::vector<std::unique_ptr<Cell>>& cells,
                           int frame, const MachineConfig& config) {
   FrameScreen out;
+  if (config.completion_cycles) out.completion_cycles = completion_cycles(layout, cells, frame);
   if (config.screen == ScreenFormat::Srgb8) {
     std::vector<const std::vector<unsigned char>*> video;
     for (const auto& cell : cells) video.push_back(&cell->video_memory(frame).srgb8);
@@ -318,7 +339,8 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
                                                 cam.width, cam.height));
       const WindowLayout layout = frame_layout(config, cam.width, cam.height, static_cast<int>(f));
       std::vector<TracedCell> traced = trace_cells(tracer, layout, config.profile.cell, threads,
-                                                   one ? &progress : nullptr, config.aa, config.screen);
+                                                   one ? &progress : nullptr, config.aa, config.screen,
+                                                   config.completion_cycles);
       work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config.profile));
       if (!one) progress.advance(1);
     }

@@ -33,6 +33,9 @@ struct MachineConfig {
   // R x C, each frame with its own dot shift (dot_shift_for_frame), and the
   // cells run through a group without waiting for each other.
   bool frame_average = false;
+  // Keep when every pixel reached video memory (FrameScreen::completion_cycles);
+  // off, a run keeps no per-pixel figures it does not need.
+  bool completion_cycles = false;
 };
 
 struct CellReport {
@@ -58,6 +61,12 @@ struct FrameScreen {
   std::vector<float> pixel_cycles;   // row-major
   std::vector<float> pixel_samples;  // row-major
   std::vector<unsigned char> screen_srgb8;
+  // With MachineConfig::completion_cycles, in either format, row-major: the
+  // cycle of the run at which the pixel was in its cell's video memory, so on
+  // the screen. A cell writes its pixels in video-memory order from the start
+  // of its tracing (antialiased, of its subdivision), each when the cycles of
+  // its own operations have passed.
+  std::vector<std::uint64_t> completion_cycles;
 };
 
 // A distribution unit as it ran: its frames, and when the host started it and

@@ -303,4 +303,12 @@ nlohmann::json report_json(const SimulationResult& r) {
   return report;
 }
 
+std::string report_json_text(const SimulationResult& r) { return report_json(r).dump(2) + "\n"; }
+
+std::string chrome_trace_text(const SimulationResult& r) {
+  const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", to_string(r.config.cells),
+                                       to_string(r.config.mode), r.config.profile.name);
+  return r.timeline.to_chrome_trace(name, r.config.profile.clock_hz).dump() + "\n";
+}
+
 }  // namespace capsim::sim

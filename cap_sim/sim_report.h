@@ -43,5 +43,11 @@ LinkTotals link_totals(const SimulationResult& r);
 
 std::string format_report(const SimulationResult& r);
 nlohmann::json report_json(const SimulationResult& r);
+// The text --report writes: report_json indented by 2, and a newline.
+std::string report_json_text(const SimulationResult& r);
+
+// The text --trace writes: the timeline as Chrome trace-event JSON, its process
+// named after the grid, mode and profile.
+std::string chrome_trace_text(const SimulationResult& r);
 
 }  // namespace capsim::sim

@@ -94,10 +94,12 @@ std::uint64_t saturated_cycles(const OpCounts& ops, const CellCosts& costs) {
 }
 
 // Video memories of the right size and format for every cell.
-std::vector<TracedCell> empty_cells(const WindowLayout& layout, ScreenFormat format, bool antialiased) {
+std::vector<TracedCell> empty_cells(const WindowLayout& layout, ScreenFormat format, bool antialiased,
+                                    bool keep_write_cycles) {
   std::vector<TracedCell> cells(layout.grid().cell_count());
   for (CellId c = 0; c < layout.grid().cell_count(); ++c) {
     const int n = layout.window(c).pixel_count();
+    if (keep_write_cycles) cells[c].write_cycles.resize(n);
     if (format == ScreenFormat::Srgb8) {
       cells[c].srgb8.resize(static_cast<std::size_t>(n) * 3);
       continue;
@@ -132,11 +134,11 @@ void parallel_rows(int threads, int count, Body body) {
 std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const WindowLayout& layout,
                                                 const CellCosts& costs, int threads,
                                                 Progress* progress, const AntialiasOptions& aa,
-                                                ScreenFormat format) {
+                                                ScreenFormat format, bool keep_write_cycles) {
   const int cell_count = layout.grid().cell_count();
   const int width = layout.width(), height = layout.height();
   const bool floats = format == ScreenFormat::Float;
-  std::vector<TracedCell> cells = empty_cells(layout, format, true);
+  std::vector<TracedCell> cells = empty_cells(layout, format, true, keep_write_cycles);
   const OwnerTable owners(layout);
   auto owner = [&](int x, int y) { return owners.owner(std::min(x, width - 1), std::min(y, height - 1)); };
 
@@ -173,12 +175,15 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
         store(out, own.video_index, px.value, format);
         sum.ops[own.cell] += ops;
         ++sum.items[own.cell];
+        if (!floats && !keep_write_cycles) continue;
+        const std::uint64_t subdivision = saturated_cycles(ops, costs);
+        if (keep_write_cycles) out.write_cycles[own.video_index] = subdivision;
         if (!floats) continue;
         std::uint64_t owned = corner_cycles[corners.index(x, y)];
         if (x == width - 1) owned += corner_cycles[corners.index(x + 1, y)];
         if (y == height - 1) owned += corner_cycles[corners.index(x, y + 1)];
         if (x == width - 1 && y == height - 1) owned += corner_cycles[corners.index(x + 1, y + 1)];
-        out.pixel_cycles[own.video_index] = owned + saturated_cycles(ops, costs);
+        out.pixel_cycles[own.video_index] = owned + subdivision;
         out.pixel_samples[own.video_index] =
             static_cast<std::uint32_t>(owned_corner_count(x, y, width, height) + px.subdivision_samples);
       }
@@ -212,11 +217,12 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
 
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CellCosts& costs, int threads, Progress* progress,
-                                    const AntialiasOptions& aa, ScreenFormat format) {
-  if (aa.depth > 0) return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format);
+                                    const AntialiasOptions& aa, ScreenFormat format, bool keep_write_cycles) {
+  if (aa.depth > 0)
+    return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format, keep_write_cycles);
   const int cell_count = layout.grid().cell_count();
   const bool floats = format == ScreenFormat::Float;
-  std::vector<TracedCell> cells = empty_cells(layout, format, false);
+  std::vector<TracedCell> cells = empty_cells(layout, format, false, keep_write_cycles);
   const OwnerTable owners(layout);
   // Pixels are traced in screen order, row by row as `capsim render` traces
   // them (neighbouring rays share voxels and primitives in the caches), and each
@@ -231,14 +237,16 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
         const PixelOwner owner = owners.owner(x, y);
         TracedCell& out = cells[owner.cell];
         ++sum.items[owner.cell];
-        if (!floats) {
+        if (!floats && !keep_write_cycles) {
           // trace_pixel adds its operations to the cell's sum directly.
           store(out, owner.video_index, tracer.trace_pixel(x, y, s, sum.ops[owner.cell]), format);
           continue;
         }
         OpCounts ops;
         store(out, owner.video_index, tracer.trace_pixel(x, y, s, ops), format);
-        out.pixel_cycles[owner.video_index] = saturated_cycles(ops, costs);
+        const std::uint64_t cycles = saturated_cycles(ops, costs);
+        if (floats) out.pixel_cycles[owner.video_index] = cycles;
+        if (keep_write_cycles) out.write_cycles[owner.video_index] = cycles;
         sum.ops[owner.cell] += ops;
       }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());

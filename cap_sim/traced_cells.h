@@ -38,13 +38,19 @@ struct TracedCell {
   CostBreakdown corner_work;               // phase 1: tracing the corners it owns
   CostBreakdown subdivision_work;          // phase 3: its pixels' subdivision
   std::vector<std::uint32_t> pixel_samples;  // primary samples traced per pixel (Float)
+  // Kept only when asked (trace_cells' keep_write_cycles), in either format: per
+  // pixel, the cycles of the step that writes it into video memory, its tracing
+  // (antialiased, its subdivision in phase 3). They add up to work.total()
+  // (antialiased, to subdivision_work.total()).
+  std::vector<std::uint64_t> write_cycles;
 };
 
 // One entry per cell of the layout. threads: 0 = all hardware threads.
 // progress may be null; it advances by render_work(width, height, aa).
+// keep_write_cycles: fill TracedCell::write_cycles.
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CellCosts& costs, int threads, Progress* progress,
                                     const AntialiasOptions& aa = {},
-                                    ScreenFormat format = ScreenFormat::Float);
+                                    ScreenFormat format = ScreenFormat::Float, bool keep_write_cycles = false);
 
 }  // namespace capsim::sim

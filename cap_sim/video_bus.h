@@ -15,8 +15,9 @@
 namespace capsim::sim {
 
 // Calls put(c, k, s) for every pixel k of every cell c's window, where s is that
-// pixel's row-major index on the screen. Cells run in parallel, so put may
-// write only what belongs to screen pixel s (windows never overlap in a valid
+// pixel's row-major index on the screen. Cells run in parallel, one thread per
+// cell taking its pixels in order k = 0, 1, ..., so put may write only what
+// belongs to screen pixel s or to cell c (windows never overlap in a valid
 // layout; compose_screen checks that).
 template <class Put>
 void for_each_window_pixel(const WindowLayout& layout, Put put) {

@@ -15,6 +15,7 @@
 #include <csetjmp>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -306,6 +307,32 @@ void write_image(PendingFile& out, const Framebuffer& fb, const std::vector<Extr
   } else {
     write_exr_file(out, fb, extra);
   }
+}
+
+std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vector<unsigned char>& rgb) {
+  if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
+    throw std::logic_error(fmt::format("{} bytes for a {}x{} RGB image", rgb.size(), width, height));
+  // The file writer's own path, into a memory stream.
+  char* data = nullptr;
+  std::size_t size = 0;
+  std::FILE* f = open_memstream(&data, &size);
+  if (!f) throw std::bad_alloc();
+  PngSink sink{f, 0, ""};
+  const std::string error = png_write_chunks(sink, width, height, png_image_data(width, height, rgb.data()));
+  std::fclose(f);
+  std::vector<unsigned char> png(data, data + size);
+  std::free(data);
+  if (!error.empty()) throw std::runtime_error(error);
+  return png;
+}
+
+std::vector<unsigned char> srgb8_pixels(const Framebuffer& fb) {
+  const Srgb8Table& encode = srgb8_table();
+  const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
+  std::vector<unsigned char> rgb(pixels * 3);
+  for (std::size_t k = 0; k < pixels; ++k)
+    for (int c = 0; c < 3; ++c) rgb[3 * k + c] = encode(fb.rgba[4 * k + c]);
+  return rgb;
 }
 
 }  // namespace capsim

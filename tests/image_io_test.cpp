@@ -102,6 +102,10 @@ TEST(ImageIo, FailureLeavesNoFile) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
 }
 
+TEST(ImageIo, PngInMemoryRefusesAWrongSize) {
+  EXPECT_THROW((void)encode_png_rgb8(4, 3, std::vector<unsigned char>(35)), std::logic_error);
+}
+
 TEST(ImageIo, EqualImagesGiveEqualBytes) {
   TempDir dir;
   Framebuffer fb(4, 4);
@@ -137,6 +141,11 @@ TEST(ImageIo, PngFromRowsEqualsPngFromAFramebuffer) {
   write_image(dir / "fb.png", fb);
   write_png_rgb8(dir / "rows.png", w, h, rgb);
   EXPECT_TRUE(read_file(dir / "fb.png") == read_file(dir / "rows.png"));
+  // In memory (the HTML report's data URIs): the same file, and the same
+  // colours as the framebuffer's PNG.
+  const std::vector<unsigned char> png = encode_png_rgb8(w, h, rgb);
+  EXPECT_TRUE(std::string(png.begin(), png.end()) == read_file(dir / "rows.png"));
+  EXPECT_TRUE(srgb8_pixels(fb) == rgb);
 
   auto in = OIIO::ImageInput::open(dir / "rows.png");
   ASSERT_TRUE(in);

@@ -61,4 +61,12 @@ void write_png_rgb8(const std::string& path, int width, int height,
                     const std::vector<unsigned char>& rgb);
 void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<unsigned char>& rgb);
 
+// The bytes of that PNG file, in memory (for data URIs). Throws
+// std::logic_error if rgb does not hold width * height * 3 bytes.
+std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vector<unsigned char>& rgb);
+
+// The 8-bit sRGB colours (3 bytes per pixel, row 0 at the top) that
+// write_image's PNG output of fb holds.
+std::vector<unsigned char> srgb8_pixels(const Framebuffer& fb);
+
 }  // namespace capsim

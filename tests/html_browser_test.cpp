@@ -1,0 +1,269 @@
+// The HTML report in a real browser: headless Chromium loads the page from a
+// file URL, the page's script runs, and the DOM it leaves shows that the
+// player, the heat map, the table, the timeline and (for a sequence with
+// antialiasing) the per-frame chart and the link map were built from the run's
+// numbers; a screenshot is taken. Two browser launches in all. Skipped where
+// Chromium is not installed (Debian package chromium; .ci/run installs it).
+
+#include "cli_run.h"
+#include "html_page.h"
+
+#include "html_report.h"
+#include "machine.h"
+#include "scene_builders.h"
+#include "sim_report.h"
+
+#include "capsim/parser.h"
+
+#include <OpenImageIO/imageio.h>
+#include <fmt/core.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace capsim::sim {
+namespace {
+
+using capsim::testing::data_attributes;
+using capsim::testing::read_file;
+using capsim::testing::TempDir;
+
+// The Chromium executable on PATH, or "" (CAPSIM_CHROMIUM overrides).
+std::string find_chromium() {
+  if (const char* chosen = std::getenv("CAPSIM_CHROMIUM")) return chosen;
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    for (const char* name : {"chromium", "chromium-browser"}) {
+      const std::filesystem::path candidate = std::filesystem::path(dir) / name;
+      if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
+    }
+  return "";
+}
+
+#define SKIP_WITHOUT_CHROMIUM(chromium)                                                                   \
+  if ((chromium).empty())                                                                                 \
+  GTEST_SKIP() << "Chromium is not installed (Debian package chromium): the HTML report is not checked " \
+                  "in a browser"
+
+// Loads file://page#fragment in headless Chromium, lets its scripts run (with
+// up to ten seconds of virtual time for the images to load), and returns the
+// DOM they left; with a screenshot path, also takes a screenshot of that size.
+// Start-up can be slow on a loaded machine: the launch has two minutes.
+std::string dump_dom(const std::string& chromium, const TempDir& dir, const std::string& page,
+                     const std::string& fragment, const std::string& screenshot = "", int width = 0,
+                     int height = 0) {
+  const std::string url = "file://" + std::filesystem::absolute(page).string() + fragment;
+  std::string command = fmt::format(
+      "timeout 120 '{}' --headless --no-sandbox --disable-gpu --no-first-run --no-default-browser-check "
+      "--disable-dev-shm-usage --hide-scrollbars --user-data-dir='{}' --virtual-time-budget=10000 --dump-dom",
+      chromium, dir / "chromium-profile");
+  if (!screenshot.empty())
+    command += fmt::format(" --screenshot='{}' --window-size={},{}", screenshot, width, height);
+  command += fmt::format(" '{}' >'{}' 2>'{}'", url, dir / "dom.html", dir / "chromium.log");
+  const int status = std::system(command.c_str());
+  EXPECT_EQ(status, 0) << command << "\n" << read_file(dir / "chromium.log");
+  return read_file(dir / "dom.html");
+}
+
+PreparedScene balls(int width, int height) {
+  PrepareOptions prep;
+  prep.width = width;
+  prep.height = height;
+  return prepare_scene(parse_scene_file(std::string(CAPSIM_SOURCE_DIR) + "/scenes/balls.csg"), prep);
+}
+
+MachineConfig config_of(CellGrid grid, PixelMode mode, int aa) {
+  MachineConfig c;
+  c.cells = grid;
+  c.mode = mode;
+  c.profile = load_cost_profile("cap");
+  c.aa = {aa, 0.3};
+  c.screen = ScreenFormat::Srgb8;
+  c.completion_cycles = true;
+  return c;
+}
+
+const RunFacts kFacts{"scenes/balls.csg", "capsim simulate scenes/balls.csg -o s.png", 0.25, "0.1.0"};
+
+void write(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+std::uint64_t number(const std::map<std::string, std::string>& attributes, const std::string& key) {
+  const auto it = attributes.find(key);
+  if (it == attributes.end()) throw std::runtime_error("no data-" + key);
+  return std::stoull(it->second);
+}
+
+// The (data-cell, data-value) pairs of the heat map's rectangles.
+std::map<int, std::uint64_t> heat_map_values(const std::string& dom) {
+  const std::size_t begin = dom.find("id=\"cell-map\"");
+  const std::string map = dom.substr(begin, dom.find("</svg>", begin) - begin);
+  std::map<int, std::uint64_t> out;
+  const std::regex rect("<rect class=\"cell\"[^>]* data-cell=\"([0-9]+)\" data-value=\"([0-9]+)\"");
+  for (auto it = std::sregex_iterator(map.begin(), map.end(), rect); it != std::sregex_iterator(); ++it)
+    out[std::stoi((*it)[1])] = std::stoull((*it)[2]);
+  return out;
+}
+
+TEST(HtmlReportInBrowser, ScriptBuildsThePlayerHeatMapTableAndTimelineFromTheRunsNumbers) {
+  const std::string chromium = find_chromium();
+  SKIP_WITHOUT_CHROMIUM(chromium);
+  TempDir dir;
+  const PreparedScene scene = balls(64, 48);
+  const Tracer tracer(scene, TraceOptions{});
+  const SimulationResult r = simulate_frame(tracer, config_of({4, 4}, PixelMode::Dot, 0), 2, false);
+  write(dir / "report.html", html_report(r, kFacts));
+
+  // The player half way through the pixels' completions; the table sorted by
+  // busy time, most first.
+  const std::vector<std::uint64_t>& done = r.screens[0].completion_cycles;
+  const auto [first, last] = std::minmax_element(done.begin(), done.end());
+  const double hz = static_cast<double>(r.config.profile.clock_hz);
+  const std::uint64_t wanted = (*first + *last) / 2;
+  const std::string dom = dump_dom(chromium, dir, dir / "report.html",
+                                   fmt::format("#t={:.9f}&sort=-busy_cycles", static_cast<double>(wanted) / hz),
+                                   dir / "shot.png", 1200, 1500);
+
+  const auto page = data_attributes(dom, "player");  // id="player" is on the <div>; the root has data-built
+  const std::size_t root = dom.find("<html");
+  const std::string html_tag = dom.substr(root, dom.find('>', root) - root);
+  EXPECT_NE(html_tag.find("data-built=\"player completion cellMap table timeline frameChart linkMap save\""),
+            std::string::npos)
+      << html_tag;
+  EXPECT_EQ(html_tag.find("data-failed"), std::string::npos) << html_tag;
+
+  // The player: the completion cycles it unpacked, and the pixels it shows at
+  // the time it was given.
+  ASSERT_FALSE(page.empty()) << "no player in the DOM";
+  EXPECT_EQ(number(page, "pixels"), done.size());
+  EXPECT_EQ(number(page, "first-cycles"), *first);
+  EXPECT_EQ(number(page, "last-cycles"), *last);
+  EXPECT_EQ(number(page, "start-cycles"), 0u);
+  EXPECT_EQ(number(page, "end-cycles"), r.frame.count());
+  const std::uint64_t time = number(page, "time-cycles");
+  EXPECT_LE(time > wanted ? time - wanted : wanted - time, 1u);
+  const auto shown =
+      static_cast<std::uint64_t>(std::count_if(done.begin(), done.end(), [&](std::uint64_t t) { return t <= time; }));
+  EXPECT_EQ(number(page, "shown"), shown);
+  EXPECT_GT(shown, 0u);
+  EXPECT_LT(shown, done.size());
+
+  // The heat map: one rectangle per cell, coloured by its busy cycles.
+  const auto map = data_attributes(dom, "cell-map");
+  EXPECT_EQ(number(map, "cells"), r.cells.size());
+  EXPECT_EQ(map.at("metric"), "busy_cycles");
+  std::map<int, std::uint64_t> busy;
+  for (const CellReport& c : r.cells) busy[c.id] = c.busy.count();
+  EXPECT_EQ(heat_map_values(dom), busy);
+  const auto by_busy = [](auto a, auto b) { return a.second < b.second; };
+  EXPECT_EQ(number(map, "min"), std::min_element(busy.begin(), busy.end(), by_busy)->second);
+  EXPECT_EQ(number(map, "max"), std::max_element(busy.begin(), busy.end(), by_busy)->second);
+
+  // The table: sorted by busy time, most first, ties by cell id.
+  const auto table = data_attributes(dom, "cell-table");
+  EXPECT_EQ(number(table, "rows"), r.cells.size());
+  EXPECT_EQ(table.at("sort-key"), "busy_cycles");
+  EXPECT_EQ(table.at("sort-order"), "descending");
+  std::vector<CellReport> sorted = r.cells;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [](const CellReport& a, const CellReport& b) { return a.busy > b.busy; });
+  std::string order;
+  for (const CellReport& c : sorted) order += (order.empty() ? "" : " ") + std::to_string(c.id);
+  EXPECT_EQ(table.at("order"), order);
+  const std::size_t rows = dom.find("<tbody>", dom.find("id=\"cell-table\""));
+  EXPECT_NE(dom.find(fmt::format("<tr data-cell=\"{}\" data-row=\"{}\" data-col=\"{}\" data-pixels=\"{}\" "
+                                 "data-rays=\"{}\" data-busy-cycles=\"{}\"",
+                                 sorted[0].id, sorted[0].position.row, sorted[0].position.col, sorted[0].pixels,
+                                 sorted[0].rays, sorted[0].busy.count()),
+                     rows),
+            std::string::npos)
+      << "the first row is the busiest cell, with its exact figures";
+
+  // The timeline: every track and span of the trace.
+  const auto timeline = data_attributes(dom, "timeline");
+  EXPECT_EQ(number(timeline, "tracks"), r.timeline.tracks().size());
+  EXPECT_EQ(number(timeline, "spans"), r.timeline.spans().size());
+  Cycles end;
+  for (const TimelineSpan& s : r.timeline.spans()) end = std::max(end, s.end);
+  EXPECT_EQ(number(timeline, "end-cycles"), end.count());
+  EXPECT_NE(dom.find("<button type=\"button\" id=\"save-trace\">"), std::string::npos) << "the save button is shown";
+
+  // The screenshot: the page drawn at the size asked for, not blank.
+  auto in = OIIO::ImageInput::open(dir / "shot.png");
+  ASSERT_TRUE(in) << "no screenshot";
+  const OIIO::ImageSpec& spec = in->spec();
+  EXPECT_EQ(spec.width, 1200);
+  EXPECT_EQ(spec.height, 1500);
+  std::vector<unsigned char> pixels(static_cast<std::size_t>(spec.width) * spec.height * 3);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, pixels.data()));
+  std::set<std::uint32_t> colours;
+  for (std::size_t k = 0; k < pixels.size(); k += 3)
+    colours.insert(pixels[k] << 16 | pixels[k + 1] << 8 | pixels[k + 2]);
+  EXPECT_GT(colours.size(), 200u);
+}
+
+// Frame k: spheres that have moved k steps to the right.
+PreparedScene moving_frame(int k, int width, int height) {
+  std::vector<Primitive> prims;
+  for (int i = 0; i < 5; ++i) prims.push_back(testing::sphere({i * 1.5 + 0.4 * k, 0, 0}, 0.6));
+  Scene s = testing::make_scene(prims);
+  Camera cam;
+  cam.eye = {3, -12, 5};
+  cam.center = {3, 0, 0};
+  cam.up = {0, 0, 1};
+  cam.fov_deg = 45;
+  s.camera = cam;
+  PrepareOptions o;
+  o.width = width;
+  o.height = height;
+  return prepare_scene(s, o);
+}
+
+TEST(HtmlReportInBrowser, SequenceWithAntialiasingGetsItsFramesChartLinkMapAndFramePlayer) {
+  const std::string chromium = find_chromium();
+  SKIP_WITHOUT_CHROMIUM(chromium);
+  TempDir dir;
+  std::vector<PreparedScene> scenes;
+  for (int k = 0; k < 5; ++k) scenes.push_back(moving_frame(k, 32, 24));
+  std::vector<std::unique_ptr<Tracer>> tracers;
+  std::vector<const Tracer*> list;
+  for (const PreparedScene& s : scenes) {
+    tracers.push_back(std::make_unique<Tracer>(s, TraceOptions{}));
+    list.push_back(tracers.back().get());
+  }
+  MachineConfig config = config_of({2, 2}, PixelMode::Dot, 1);
+  config.frame_average = true;
+  const SimulationResult r = simulate_frames(list, config, 2, false);
+  write(dir / "sequence.html", html_report(r, kFacts));
+  const std::string dom = dump_dom(chromium, dir, dir / "sequence.html", "#frame=3");
+
+  const auto player = data_attributes(dom, "player");
+  ASSERT_FALSE(player.empty()) << "no player in the DOM";
+  EXPECT_EQ(number(player, "frame"), 3u);
+  const std::vector<std::uint64_t>& done = r.screens[3].completion_cycles;
+  EXPECT_EQ(number(player, "first-cycles"), *std::min_element(done.begin(), done.end()));
+  EXPECT_EQ(number(player, "last-cycles"), *std::max_element(done.begin(), done.end()));
+  EXPECT_EQ(number(player, "shown"), done.size()) << "at the end of the frame every pixel is on the screen";
+  EXPECT_NE(dom.find("<figure class=\"frame other-frame\" data-frame=\"0\">"), std::string::npos);
+  EXPECT_NE(dom.find("<figure class=\"frame\" data-frame=\"3\">"), std::string::npos);
+
+  const auto chart = data_attributes(dom, "frame-chart");
+  EXPECT_EQ(number(chart, "frames"), 5u);
+  const auto links = data_attributes(dom, "link-map");
+  EXPECT_EQ(number(links, "links"), r.links.size());
+  EXPECT_EQ(number(links, "bytes"), link_totals(r).bytes);
+  EXPECT_GT(r.links.size(), 0u);
+}
+
+}  // namespace
+}  // namespace capsim::sim
