@@ -41,17 +41,25 @@ bool is_object(std::string_view n) {
          n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
 }
 
-// OpenSCAD modules outside the subset, with why they are refused.
+// OpenSCAD modules outside the subset, with why they are refused: what the
+// module would need that capsim does not have.
 std::optional<std::string_view> unsupported_reason(std::string_view n) {
   for (std::string_view m : {"square", "circle", "polygon", "text", "offset", "projection"}) {
-    if (n == m) return "2D shapes are not supported";
+    if (n == m) return "2-D shapes are not supported; capsim traces only the solids sphere, cube and "
+                       "cylinder, exactly";
+  }
+  for (std::string_view m : {"linear_extrude", "rotate_extrude"}) {
+    if (n == m) return "extrusions are not supported: they make solids out of 2-D shapes, and capsim "
+                       "traces only the solids sphere, cube and cylinder, exactly";
   }
   for (std::string_view m : {"polyhedron", "import", "surface"}) {
     if (n == m) return "meshes are not supported; capsim traces exact spheres, boxes and cones";
   }
-  for (std::string_view m : {"linear_extrude", "rotate_extrude", "hull", "minkowski", "resize"}) {
-    if (n == m) return "only union, difference and intersection combine solids";
+  for (std::string_view m : {"hull", "minkowski"}) {
+    if (n == m) return "only union, difference and intersection combine solids; hull and minkowski "
+                       "build new solids out of their children";
   }
+  if (n == "resize") return "resizing to the children's bounds is not supported; use scale()";
   for (std::string_view m : {"children", "parent_module", "import_stl", "import_off", "import_dxf",
                              "dxf_linear_extrude", "dxf_rotate_extrude"}) {
     if (n == m) return "it is not part of a plain CSG tree";

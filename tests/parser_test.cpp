@@ -538,6 +538,41 @@ TEST(ParserRefusesConstructs, UnsupportedModuleNestedInTree) {
                       24, "'hull' is not supported: only union, difference and intersection"));
 }
 
+// The refusal says what capsim lacks for the module: 2-D shapes and the
+// extrusions that turn them into solids are not refused as if they were CSG
+// operators.
+TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
+  const char* shapes[][2] = {
+      {"square", "square(2);"},         {"circle", "circle(2);"},
+      {"polygon", "polygon([[0, 0], [1, 0], [0, 1]]);"},
+      {"text", "text(\"hi\");"},       {"offset", "offset(r = 1) square();"},
+      {"projection", "projection() cube();"},
+  };
+  for (auto& s : shapes) {
+    EXPECT_TRUE(Refused(s[1], 1, 1,
+                        fmt::format("'{}' is not supported: 2-D shapes are not supported; capsim "
+                                    "traces only the solids sphere, cube and cylinder, exactly; "
+                                    "supported: sphere, cube, cylinder,",
+                                    s[0])))
+        << s[0];
+  }
+  const char* extrusions[][2] = {
+      {"linear_extrude", "linear_extrude(height = 1) square();"},
+      {"rotate_extrude", "rotate_extrude() circle(1);"},
+  };
+  for (auto& e : extrusions) {
+    EXPECT_TRUE(Refused(e[1], 1, 1,
+                        fmt::format("'{}' is not supported: extrusions are not supported: they make "
+                                    "solids out of 2-D shapes, and capsim traces only the solids "
+                                    "sphere, cube and cylinder, exactly; supported:",
+                                    e[0])))
+        << e[0];
+  }
+  EXPECT_TRUE(Refused("resize([1, 1, 1]) cube();", 1, 1,
+                      "'resize' is not supported: resizing to the children's bounds is not "
+                      "supported; use scale(); supported:"));
+}
+
 TEST(ParserRefusesConstructs, UnknownModuleSuggestsSpelling) {
   EXPECT_TRUE(
       Refused("sphre(1);", 1, 1, "unknown module 'sphre' (did you mean 'sphere'?); supported:"));
