@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -852,6 +853,35 @@ TEST(ParserRefusesSyntax, UnterminatedStringAndComment) {
   EXPECT_TRUE(Refused("cube();\ncolor(\"red) cube();", 2, 7, "unterminated string"));
   EXPECT_TRUE(Refused("cube();\n  /* comment\n cube();", 2, 3, "unterminated comment"));
   EXPECT_TRUE(Refused("color(\"r\\ed\") cube();", 1, 9, "unsupported escape '\\e' in string"));
+}
+
+// Strings the messages quote are shown whole and on one line: a NUL no longer
+// ends the message, and bytes that are not UTF-8 are not written raw.
+TEST(ParserRefusesSyntax, QuotedStringsAreEscaped) {
+  using namespace std::string_literals;
+  EXPECT_TRUE(Refused("cube();\n\"a\0b\";"s, 2, 1,
+                      R"(expected an object such as sphere(), cube() or cylinder(), got string "a\0b")"));
+  EXPECT_TRUE(Refused("color(\"re\0d\") cube();"s, 1, 7, R"(unknown colour "re\0d" (did you mean "red"?); use)"));
+  EXPECT_TRUE(Refused("color(\"gr\xFCn\") cube();", 1, 7, R"(unknown colour "gr\xFCn"; use)"));
+  // Well-formed UTF-8 is kept; a truncated sequence, an overlong form and a
+  // surrogate are not well-formed.
+  EXPECT_TRUE(Refused("color(\"gr\xC3\xBCn\") cube();", 1, 7, "unknown colour \"gr\xC3\xBCn\"; use"));
+  EXPECT_TRUE(Refused("color(\"\xE2\x82\") cube();", 1, 7, R"(unknown colour "\xE2\x82"; use)"));
+  EXPECT_TRUE(Refused("color(\"\xC0\xAF\") cube();", 1, 7, R"(unknown colour "\xC0\xAF"; use)"));
+  EXPECT_TRUE(Refused("color(\"\xED\xA0\x80\") cube();", 1, 7, R"(unknown colour "\xED\xA0\x80"; use)"));
+  // Control characters, quotes and backslashes, decoded or raw.
+  EXPECT_TRUE(Refused("color(\"a\\n\\\"\\\\\x01\x7f\tb\") cube();", 1, 7,
+                      R"(unknown colour "a\n\"\\\x01\x7F\tb"; use)"));
+  EXPECT_TRUE(Refused("color(\"a\\\xC3\xA9\") cube();", 1, 9,
+                      R"(unsupported escape '\' followed by byte 0xC3 in string)"));
+  EXPECT_TRUE(Refused("color(\"a\\\0\") cube();"s, 1, 9,
+                      R"(unsupported escape '\' followed by byte 0x00 in string)"));
+  try {
+    parse("\"\0\";"s);
+    ADD_FAILURE() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).size(), std::strlen(e.what()));
+  }
 }
 
 TEST(ParserRefusesSyntax, StrayCharacters) {

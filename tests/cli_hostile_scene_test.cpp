@@ -1,0 +1,45 @@
+// `capsim render` on hostile scene files: each is refused with one located
+// message (exit 1, nothing written) or rendered, never a crash, a cut message
+// or a blank image with exit 0. Large inputs are generated here, not stored.
+
+#include "cli_run.h"
+
+#include <fstream>
+#include <string>
+
+using namespace capsim::testing;
+
+namespace {
+
+// Writes `text` as dir/name and returns its path.
+std::string write_scene(const TempDir& dir, const std::string& name, const std::string& text) {
+  const std::string path = dir / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+// Renders `scene` to a small PNG; the run must fail with exactly one line,
+// `SCENE:LINE:COL: ...` holding `fragment`, and leave no image.
+::testing::AssertionResult RefusedAt(const TempDir& dir, const std::string& scene,
+                                     const std::string& where, const std::string& fragment) {
+  const std::string out = dir / "out.png";
+  const RunResult r = run_capsim("render " + scene + " -o " + out + " --size 16x16", dir);
+  const std::string prefix = scene + ":" + where + ": ";
+  if (r.status != 1 || r.err.rfind(prefix, 0) != 0 || r.err.find(fragment) == std::string::npos ||
+      r.err.find('\n') != r.err.size() - 1 || std::filesystem::exists(out)) {
+    return ::testing::AssertionFailure() << "status " << r.status << ", stderr: " << r.err;
+  }
+  return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+TEST(CliHostileScene, QuotedStringsArePrintedWhole) {
+  TempDir dir;
+  using namespace std::string_literals;
+  const std::string scene = write_scene(dir, "nul.csg", "cube();\ncolor(\"re\0d\xFF\") cube();"s);
+  EXPECT_TRUE(RefusedAt(dir, scene, "2:7",
+                        R"(unknown colour "re\0d\xFF"; use a CSS/SVG colour )"
+                        R"(name (e.g. "red", "steelblue"), "#rgb", "#rgba", "#rrggbb", "#rrggbbaa" or )"
+                        R"(a vector [r, g, b] / [r, g, b, a] of numbers in [0, 1])"));
+}
