@@ -67,7 +67,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   return std::nullopt;
 }
 
-[[noreturn]] void refuse_module(const Call& call) {
+[[noreturn, gnu::noinline]] void refuse_module(const Call& call) {
   if (auto reason = unsupported_reason(call.name)) {
     throw SceneError(call.loc, fmt::format("'{}' is not supported: {}; supported: {}", call.name,
                                            *reason, kSupported));
@@ -91,10 +91,15 @@ struct Context {
   glm::dvec3 color = Primitive{}.color;
   double alpha = 1;
   Material material;
-  bool dropped = false;     // inside a '%' or '*' subtree: parsed and checked, then discarded
-  std::string_view parent;  // enclosing call, "" at the top level
+  bool dropped = false;  // inside a '%' or '*' subtree: parsed and checked, then discarded
 };
 
+// The walk recurses a few frames per level of the tree, and a tree may be
+// scene_file::kMaxNestingDepth levels deep, so the recursive functions keep
+// their frames small: contexts live in Interpreter::contexts_, and the work of
+// a level that needs large locals (matrices, argument tables, messages) is
+// done in helpers kept out of line, whose frames are gone before the walk goes
+// a level deeper.
 class Interpreter {
  public:
   explicit Interpreter(std::shared_ptr<const std::string> file) : file_(std::move(file)) {}
@@ -105,14 +110,14 @@ class Interpreter {
     root.loc = SourceLoc{file_, 1, 1};
     root.children.reserve(calls.size());
     int objects = 0;
-    Context top;
+    contexts_.emplace_back();  // the top level's
     for (const Call& call : calls) {
       if (is_setting(call.name)) {
         setting(call);
         continue;
       }
       ++objects;
-      if (auto node = object(call, top)) root.children.push_back(std::move(*node));
+      if (auto node = object(call, 0, "")) root.children.push_back(std::move(*node));
     }
     if (objects == 0) {
       throw SceneError(end, file_has_tokens
@@ -130,6 +135,9 @@ class Interpreter {
   }
 
  private:
+  // An index into contexts_.
+  using ContextId = std::size_t;
+
   void setting(const Call& call) {
     if (!call.modifiers.empty()) {
       throw SceneError(call.modifiers.front().loc,
@@ -159,102 +167,131 @@ class Interpreter {
   }
 
   void no_children(const Call& call) {
-    if (call.has_body) {
-      throw SceneError(call.body_loc, fmt::format("{}() takes no children (missing ';' after "
-                                                  "{}(...)?)",
-                                                  call.name, call.name));
-    }
+    if (call.has_body) refuse_children(call);
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_children(const Call& call) {
+    throw SceneError(call.body_loc, fmt::format("{}() takes no children (missing ';' after "
+                                                "{}(...)?)",
+                                                call.name, call.name));
   }
 
   // A call with its modifiers applied; empty when it contributes nothing here.
-  std::optional<CsgNode> object(const Call& call, const Context& ctx) {
+  // `parent` is the enclosing call's name, "" at the top level.
+  std::optional<CsgNode> object(const Call& call, ContextId ctx, std::string_view parent) {
     const scene_file::Modifier* drop = nullptr;
     const scene_file::Modifier* root = nullptr;
     for (const auto& m : call.modifiers) {
       if (m.symbol == '%' || m.symbol == '*') drop = drop ? drop : &m;
       if (m.symbol == '!') root = root ? root : &m;
-      if (drop && root) {
-        throw SceneError(m.loc, fmt::format("modifiers '{}' and '{}' contradict each other",
-                                            drop->symbol, root->symbol));
-      }
+      if (drop && root) refuse_modifiers(*drop, *root, m.loc);
     }
-    if (is_setting(call.name)) {
-      throw SceneError(call.loc, fmt::format("{}() must be at the top level of the file, not "
-                                             "inside {}()",
-                                             call.name, ctx.parent));
-    }
-    if (root && !ctx.dropped) {
-      if (root_) {
-        throw SceneError(root->loc, fmt::format("only one '!' (root) modifier is allowed; the "
-                                                "first is at {}:{}",
-                                                root_loc_.line, root_loc_.col));
-      }
-      // As in OpenSCAD, the marked subtree alone is the scene: nothing above it
-      // (transforms, colours, materials) applies.
-      Context fresh;
-      root_loc_ = root->loc;
-      std::optional<CsgNode> node = build(call, fresh);
-      root_ = node ? std::move(*node) : empty_union(call.loc);
+    if (is_setting(call.name)) refuse_setting_inside(call, parent);
+    if (root && !contexts_[ctx].dropped) {
+      root_subtree(call, *root);
       return std::nullopt;
     }
     if (drop) {
-      Context inner = ctx;
-      inner.dropped = true;
-      build(call, inner);
+      dropped_subtree(call, ctx);
       return std::nullopt;
     }
     return build(call, ctx);
   }
 
-  std::optional<CsgNode> build(const Call& call, const Context& ctx) {
+  [[noreturn, gnu::noinline]] void refuse_modifiers(const scene_file::Modifier& drop,
+                                                    const scene_file::Modifier& root,
+                                                    const Loc& at) {
+    throw SceneError(at, fmt::format("modifiers '{}' and '{}' contradict each other", drop.symbol,
+                                     root.symbol));
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_setting_inside(const Call& call,
+                                                         std::string_view parent) {
+    throw SceneError(call.loc, fmt::format("{}() must be at the top level of the file, not "
+                                           "inside {}()",
+                                           call.name, parent));
+  }
+
+  // A '!' subtree: as in OpenSCAD, the marked subtree alone is the scene, and
+  // nothing above it (transforms, colours, materials) applies.
+  [[gnu::noinline]] void root_subtree(const Call& call, const scene_file::Modifier& mark) {
+    if (root_) {
+      throw SceneError(mark.loc, fmt::format("only one '!' (root) modifier is allowed; the "
+                                             "first is at {}:{}",
+                                             root_loc_.line, root_loc_.col));
+    }
+    root_loc_ = mark.loc;
+    contexts_.emplace_back();
+    std::optional<CsgNode> node = build(call, contexts_.size() - 1);
+    contexts_.pop_back();
+    root_ = node ? std::move(*node) : empty_union(call.loc);
+  }
+
+  // A '%' or '*' subtree: read and checked, then left out.
+  [[gnu::noinline]] void dropped_subtree(const Call& call, ContextId ctx) {
+    Context inner = contexts_[ctx];
+    inner.dropped = true;
+    contexts_.push_back(inner);
+    build(call, contexts_.size() - 1);
+    contexts_.pop_back();
+  }
+
+  std::optional<CsgNode> build(const Call& call, ContextId ctx) {
     std::string_view name = call.name;
     if (is_primitive(name)) {
       no_children(call);
       return primitive(call, ctx);
     }
     if (!is_object(name)) refuse_module(call);
-    Context inner = ctx;
-    inner.parent = name;
-    if (is_transform(name)) {
-      inner.transform = ctx.transform * scene_file::read_transform(call);
-      return pass_through_children(call, inner);
-    }
-    if (name == "color") {
-      scene_file::ColorSetting c = scene_file::read_color(call);
-      if (c.linear_rgb) inner.color = *c.linear_rgb;
-      inner.alpha = c.alpha;
-      return pass_through_children(call, inner);
-    }
-    if (name == "material") {
-      inner.material = scene_file::read_material(call, ctx.material);
-      return pass_through_children(call, inner);
+    if (is_transform(name) || name == "color" || name == "material") {
+      const ContextId inner = enter(call, ctx);
+      CsgNode node = pass_through_children(call, inner);
+      contexts_.pop_back();
+      return node;
     }
     scene_file::read_pass_through(call);
-    if (name == "render") return pass_through_children(call, inner);
+    if (name == "render") return pass_through_children(call, ctx);
     CsgNode node;
     node.op = name == "difference"     ? CsgOp::Difference
               : name == "intersection" ? CsgOp::Intersection
                                        : CsgOp::Union;
     node.loc = call.loc;
-    node.children = children(call, inner);
+    node.children = children(call, ctx);
     return node;
   }
 
-  std::vector<CsgNode> children(const Call& call, const Context& ctx) {
+  // The context a transform, color() or material() gives its children, pushed
+  // onto contexts_.
+  [[gnu::noinline]] ContextId enter(const Call& call, ContextId ctx) {
+    Context inner = contexts_[ctx];
+    if (is_transform(call.name)) {
+      inner.transform = inner.transform * scene_file::read_transform(call);
+    } else if (call.name == "color") {
+      scene_file::ColorSetting c = scene_file::read_color(call);
+      if (c.linear_rgb) inner.color = *c.linear_rgb;
+      inner.alpha = c.alpha;
+    } else {
+      inner.material = scene_file::read_material(call, inner.material);
+    }
+    contexts_.push_back(inner);
+    return contexts_.size() - 1;
+  }
+
+  std::vector<CsgNode> children(const Call& call, ContextId ctx) {
     std::vector<CsgNode> out;
     out.reserve(call.children.size());
     for (const Call& child : call.children) {
-      if (auto node = object(child, ctx)) out.push_back(std::move(*node));
+      if (auto node = object(child, ctx, call.name)) out.push_back(std::move(*node));
     }
     return out;
   }
 
   // Transforms, colours, materials and render() are not CSG operators: one child
   // passes through, several form their union (as in OpenSCAD).
-  CsgNode pass_through_children(const Call& call, const Context& ctx) {
+  CsgNode pass_through_children(const Call& call, ContextId ctx) {
     // A single child, by far the most common case, needs no list of nodes.
     if (call.children.size() == 1) {
-      std::optional<CsgNode> node = object(call.children.front(), ctx);
+      std::optional<CsgNode> node = object(call.children.front(), ctx, call.name);
       return node ? std::move(*node) : empty_union(call.loc);
     }
     return pass_through(call, children(call, ctx));
@@ -274,7 +311,8 @@ class Interpreter {
     return node;
   }
 
-  CsgNode primitive(const Call& call, const Context& ctx) {
+  [[gnu::noinline]] CsgNode primitive(const Call& call, ContextId id) {
+    const Context& ctx = contexts_[id];
     Primitive p = scene_file::read_primitive(call);
     p.to_world = ctx.transform * p.to_world;
     bool finite = true;
@@ -308,6 +346,9 @@ class Interpreter {
   }
 
   std::shared_ptr<const std::string> file_;
+  // The contexts of the calls being walked, outermost first. Levels refer to
+  // them by index, never by reference across a call, as the list grows.
+  std::vector<Context> contexts_;
   Scene scene_;
   std::vector<Primitive> all_primitives_;  // including those of dropped subtrees
   std::optional<CsgNode> root_;            // the '!' subtree, if any

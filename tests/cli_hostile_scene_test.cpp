@@ -43,3 +43,31 @@ TEST(CliHostileScene, QuotedStringsArePrintedWhole) {
                         R"(name (e.g. "red", "steelblue"), "#rgb", "#rgba", "#rrggbb", "#rrggbbaa" or )"
                         R"(a vector [r, g, b] / [r, g, b, a] of numbers in [0, 1])"));
 }
+
+namespace {
+
+std::string repeated(const std::string& text, int times) {
+  std::string out;
+  for (int i = 0; i < times; ++i) out += text;
+  return out;
+}
+
+}  // namespace
+
+// Nesting past the documented 1000 levels is refused where it passes the
+// limit (it overflowed the stack: exit 139, no message); 1000 levels render.
+TEST(CliHostileScene, DeepNestingIsRefusedOrRendered) {
+  TempDir dir;
+  const std::string deep =
+      write_scene(dir, "deep.csg", repeated("union() {", 5000) + "sphere(1);" + repeated("}", 5000));
+  EXPECT_TRUE(RefusedAt(dir, deep, "1:9009", "nesting deeper than 1000 levels is not supported"));
+  const std::string blocks = write_scene(dir, "blocks.csg", repeated("{", 3000));
+  EXPECT_TRUE(RefusedAt(dir, blocks, "1:1001", "nesting deeper than 1000 levels is not supported"));
+
+  const std::string limit = write_scene(
+      dir, "limit.csg",
+      repeated("difference() {\n sphere(1);\n", 1000) + "sphere(1);\n" + repeated("}", 1000));
+  const RunResult r = run_capsim("render " + limit + " -o " + (dir / "limit.png") + " --size 16x16", dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(dir / "limit.png"));
+}

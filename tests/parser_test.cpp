@@ -903,6 +903,58 @@ TEST(ParserRefusesSyntax, ErrorInsideDroppedSubtreeStillRefused) {
   EXPECT_TRUE(Refused("cube();\n*polyhedron();", 2, 2, "'polyhedron' is not supported"));
 }
 
+// ---------------------------------------------------------------- nesting depth
+
+std::string repeated(std::string_view text, int times) {
+  std::string out;
+  out.reserve(text.size() * static_cast<size_t>(times));
+  for (int i = 0; i < times; ++i) out += text;
+  return out;
+}
+
+// How many operator nodes lie above the first leaf (by first children).
+int depth_of_first_leaf(const CsgNode& root) {
+  int depth = 0;
+  for (const CsgNode* n = &root; !n->is_leaf; n = &n->children.at(0)) ++depth;
+  return depth;
+}
+
+constexpr std::string_view kTooDeep =
+    "nesting deeper than 1000 levels is not supported (calls' children, { } blocks and [ ] "
+    "vectors inside one another)";
+
+// The documented limit, 1000 levels, is read whole by every kind of nesting.
+TEST(ParserNesting, AThousandLevelsAreRead) {
+  Scene unions = parse(repeated("union() {", 1000) + "sphere();" + repeated("}", 1000));
+  EXPECT_EQ(depth_of_first_leaf(unions.root), 1001);  // the file's own union on top
+  Scene moved = parse(repeated("translate([1, 0, 0])\n", 1000) + "sphere();");
+  ASSERT_EQ(moved.primitives.size(), 1u);
+  EXPECT_TRUE(Near(apply(moved.primitives[0].to_world, {0, 0, 0}), {1000, 0, 0}));
+  EXPECT_EQ(parse(repeated("{", 1000) + "sphere();" + repeated("}", 1000)).primitives.size(), 1u);
+  EXPECT_TRUE(Refused("sphere(r = " + repeated("[", 1000) + "1" + repeated("]", 1000) + ");", 1,
+                      12, "argument 'r' of sphere must be a number, got a vector of 1 element"));
+}
+
+// One level more is refused where it opens, whatever the kinds that add up to
+// it; the files of the report, which crashed, are refused at level 1001.
+TEST(ParserNesting, DeeperIsRefusedWhereTheLimitIsPassed) {
+  EXPECT_TRUE(Refused(repeated("union() {", 1001) + "sphere();" + repeated("}", 1001), 1,
+                      9 * 1001, kTooDeep));
+  // The vector of the 1001st translate is inside 1000 calls.
+  EXPECT_TRUE(Refused(repeated("translate([1, 0, 0])\n", 1001) + "sphere();", 1001, 11, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("rotate(90)\n", 1001) + "sphere();", 1002, 1, kTooDeep));
+  EXPECT_TRUE(Refused("sphere(r = " + repeated("[", 1001) + "1" + repeated("]", 1001) + ");", 1,
+                      12 + 1000, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("union() {", 500) + repeated("{", 500) + "sphere(r = [1]);" +
+                          repeated("}", 1000),
+                      1, 9 * 500 + 500 + 12, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("union() {", 5000) + "sphere(1);" + repeated("}", 5000), 1,
+                      9 * 1001, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("{", 3000), 1, 1001, kTooDeep));
+  EXPECT_TRUE(Refused("sphere(r=" + repeated("[", 100000) + "1" + repeated("]", 100000) + ");", 1,
+                      10 + 1000, kTooDeep));
+}
+
 TEST(ParserFile, UnreadableFile) {
   std::string path =
       (std::filesystem::temp_directory_path() / "capsim_parser_test_missing.csg").string();
