@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <memory_resource>
 #include <optional>
@@ -102,7 +103,8 @@ struct Context {
 // a level deeper.
 class Interpreter {
  public:
-  explicit Interpreter(std::shared_ptr<const std::string> file) : file_(std::move(file)) {}
+  Interpreter(std::shared_ptr<const std::string> file, std::size_t max_primitives)
+      : file_(std::move(file)), max_primitives_(max_primitives) {}
 
   Scene run(std::span<const Call> calls, bool file_has_tokens, const Loc& end) {
     CsgNode root;
@@ -312,6 +314,12 @@ class Interpreter {
   }
 
   [[gnu::noinline]] CsgNode primitive(const Call& call, ContextId id) {
+    if (all_primitives_.size() == max_primitives_) {
+      throw SceneError(call.loc, fmt::format("more than {} primitives: capsim reads at most {} "
+                                             "(each needs about 1.7 KB of memory until it is "
+                                             "traced)",
+                                             max_primitives_, max_primitives_));
+    }
     const Context& ctx = contexts_[id];
     Primitive p = scene_file::read_primitive(call);
     p.to_world = ctx.transform * p.to_world;
@@ -346,6 +354,7 @@ class Interpreter {
   }
 
   std::shared_ptr<const std::string> file_;
+  std::size_t max_primitives_;
   // The contexts of the calls being walked, outermost first. Levels refer to
   // them by index, never by reference across a call, as the list grows.
   std::vector<Context> contexts_;
@@ -359,8 +368,21 @@ class Interpreter {
 
 }  // namespace
 
-Scene parse_scene(std::string_view text, const std::string& file_name) {
+namespace {
+
+[[noreturn]] void refuse_file_size(const std::shared_ptr<const std::string>& file,
+                                   std::size_t max_bytes) {
+  throw SceneError(SourceLoc{file, 0, 0},
+                   fmt::format("the file is larger than {} bytes ({} MiB), the most capsim reads "
+                               "(reading takes up to about 100 bytes of memory per byte)",
+                               max_bytes, max_bytes >> 20));
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& file_name, const ParseLimits& limits) {
   auto file = std::make_shared<const std::string>(file_name);
+  if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
   Loc end;
   // Holds the lists of the calls (see scene_syntax.h); declared first, so it
@@ -371,24 +393,31 @@ Scene parse_scene(std::string_view text, const std::string& file_name) {
   // The calls view the text, not the tokens: the tokens' memory can go back to
   // the heap for the scene about to be built.
   std::vector<scene_file::Token>().swap(tokens);
-  return Interpreter(file).run(calls, has_statements, end);
+  return Interpreter(file, limits.max_primitives).run(calls, has_statements, end);
 }
 
-Scene parse_scene_file(const std::string& path) {
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits) {
   auto file = std::make_shared<const std::string>(path);
   SourceLoc whole_file{file, 0, 0};
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
+  // A regular file's size is known before reading; others are refused when
+  // the reading passes the limit.
+  std::error_code size_error;
+  const std::uintmax_t size = std::filesystem::file_size(path, size_error);
+  if (!size_error && size > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::string text;
   char buffer[1 << 16];
   for (;;) {
     size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
     text.append(buffer, n);
+    // Stops one buffer past the limit: a larger file is never held whole.
+    if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
     if (n < sizeof buffer) break;
   }
   if (std::ferror(f.get()))
     throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
-  return parse_scene(text, path);
+  return parse_scene(text, path, limits);
 }
 
 }  // namespace capsim

@@ -955,6 +955,56 @@ TEST(ParserNesting, DeeperIsRefusedWhereTheLimitIsPassed) {
                       10 + 1000, kTooDeep));
 }
 
+// ---------------------------------------------------------------- size limits
+
+TEST(ParserLimits, DefaultsAreTheDocumentedOnes) {
+  EXPECT_EQ(ParseLimits{}.max_file_bytes, 32u << 20);
+  EXPECT_EQ(ParseLimits{}.max_primitives, 1000000u);
+}
+
+// A file past the size limit is refused as a whole before it is parsed.
+TEST(ParserLimits, FileLargerThanTheLimitIsRefusedUnread) {
+  std::string text = "sphere();" + std::string((32u << 20) - 9, ' ');
+  EXPECT_EQ(parse(text).primitives.size(), 1u);
+  text += ' ';
+  try {
+    parse(text);
+    FAIL() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "t.csg: the file is larger than 33554432 bytes (32 MiB), the most capsim reads "
+                 "(reading takes up to about 100 bytes of memory per byte)");
+    EXPECT_EQ(e.loc().line, 0);
+  }
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "capsim_parser_test_large.csg").string();
+  std::ofstream(path) << "sphere(); cube(); cylinder();";
+  try {
+    parse_scene_file(path, ParseLimits{28, 10});
+    FAIL() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": the file is larger than 28 bytes (0 MiB), the most "
+                                            "capsim reads (reading takes up to about 100 bytes of "
+                                            "memory per byte)");
+  }
+  EXPECT_EQ(parse_scene_file(path, ParseLimits{29, 10}).primitives.size(), 3u);
+  std::filesystem::remove(path);
+}
+
+// The primitive past the limit is refused where it stands; dropped ones count,
+// as they are read and held too.
+TEST(ParserLimits, PrimitivePastTheLimitIsRefusedWhereItStands) {
+  const ParseLimits three{1 << 20, 3};
+  EXPECT_EQ(parse_scene("sphere(); cube();\n%cylinder();", kFile, three).primitives.size(), 2u);
+  try {
+    parse_scene("sphere(); cube();\n%cylinder(); translate([1, 0, 0]) sphere();", kFile, three);
+    FAIL() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "t.csg:2:35: more than 3 primitives: capsim reads at most 3 (each needs "
+                           "about 1.7 KB of memory until it is traced)");
+  }
+}
+
 TEST(ParserFile, UnreadableFile) {
   std::string path =
       (std::filesystem::temp_directory_path() / "capsim_parser_test_missing.csg").string();
