@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <memory>
 #include <memory_resource>
 #include <optional>
@@ -41,17 +42,25 @@ bool is_object(std::string_view n) {
          n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
 }
 
-// OpenSCAD modules outside the subset, with why they are refused.
+// OpenSCAD modules outside the subset, with why they are refused: what the
+// module would need that capsim does not have.
 std::optional<std::string_view> unsupported_reason(std::string_view n) {
   for (std::string_view m : {"square", "circle", "polygon", "text", "offset", "projection"}) {
-    if (n == m) return "2D shapes are not supported";
+    if (n == m) return "2-D shapes are not supported; capsim traces only the solids sphere, cube and "
+                       "cylinder, exactly";
+  }
+  for (std::string_view m : {"linear_extrude", "rotate_extrude"}) {
+    if (n == m) return "extrusions are not supported: they make solids out of 2-D shapes, and capsim "
+                       "traces only the solids sphere, cube and cylinder, exactly";
   }
   for (std::string_view m : {"polyhedron", "import", "surface"}) {
     if (n == m) return "meshes are not supported; capsim traces exact spheres, boxes and cones";
   }
-  for (std::string_view m : {"linear_extrude", "rotate_extrude", "hull", "minkowski", "resize"}) {
-    if (n == m) return "only union, difference and intersection combine solids";
+  for (std::string_view m : {"hull", "minkowski"}) {
+    if (n == m) return "only union, difference and intersection combine solids; hull and minkowski "
+                       "build new solids out of their children";
   }
+  if (n == "resize") return "resizing to the children's bounds is not supported; use scale()";
   for (std::string_view m : {"children", "parent_module", "import_stl", "import_off", "import_dxf",
                              "dxf_linear_extrude", "dxf_rotate_extrude"}) {
     if (n == m) return "it is not part of a plain CSG tree";
@@ -59,7 +68,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   return std::nullopt;
 }
 
-[[noreturn]] void refuse_module(const Call& call) {
+[[noreturn, gnu::noinline]] void refuse_module(const Call& call) {
   if (auto reason = unsupported_reason(call.name)) {
     throw SceneError(call.loc, fmt::format("'{}' is not supported: {}; supported: {}", call.name,
                                            *reason, kSupported));
@@ -83,13 +92,19 @@ struct Context {
   glm::dvec3 color = Primitive{}.color;
   double alpha = 1;
   Material material;
-  bool dropped = false;     // inside a '%' or '*' subtree: parsed and checked, then discarded
-  std::string_view parent;  // enclosing call, "" at the top level
+  bool dropped = false;  // inside a '%' or '*' subtree: parsed and checked, then discarded
 };
 
+// The walk recurses a few frames per level of the tree, and a tree may be
+// scene_file::kMaxNestingDepth levels deep, so the recursive functions keep
+// their frames small: contexts live in Interpreter::contexts_, and the work of
+// a level that needs large locals (matrices, argument tables, messages) is
+// done in helpers kept out of line, whose frames are gone before the walk goes
+// a level deeper.
 class Interpreter {
  public:
-  explicit Interpreter(std::shared_ptr<const std::string> file) : file_(std::move(file)) {}
+  Interpreter(std::shared_ptr<const std::string> file, std::size_t max_primitives)
+      : file_(std::move(file)), max_primitives_(max_primitives) {}
 
   Scene run(std::span<const Call> calls, bool file_has_tokens, const Loc& end) {
     CsgNode root;
@@ -97,14 +112,14 @@ class Interpreter {
     root.loc = SourceLoc{file_, 1, 1};
     root.children.reserve(calls.size());
     int objects = 0;
-    Context top;
+    contexts_.emplace_back();  // the top level's
     for (const Call& call : calls) {
       if (is_setting(call.name)) {
         setting(call);
         continue;
       }
       ++objects;
-      if (auto node = object(call, top)) root.children.push_back(std::move(*node));
+      if (auto node = object(call, 0, "")) root.children.push_back(std::move(*node));
     }
     if (objects == 0) {
       throw SceneError(end, file_has_tokens
@@ -122,6 +137,9 @@ class Interpreter {
   }
 
  private:
+  // An index into contexts_.
+  using ContextId = std::size_t;
+
   void setting(const Call& call) {
     if (!call.modifiers.empty()) {
       throw SceneError(call.modifiers.front().loc,
@@ -151,102 +169,131 @@ class Interpreter {
   }
 
   void no_children(const Call& call) {
-    if (call.has_body) {
-      throw SceneError(call.body_loc, fmt::format("{}() takes no children (missing ';' after "
-                                                  "{}(...)?)",
-                                                  call.name, call.name));
-    }
+    if (call.has_body) refuse_children(call);
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_children(const Call& call) {
+    throw SceneError(call.body_loc, fmt::format("{}() takes no children (missing ';' after "
+                                                "{}(...)?)",
+                                                call.name, call.name));
   }
 
   // A call with its modifiers applied; empty when it contributes nothing here.
-  std::optional<CsgNode> object(const Call& call, const Context& ctx) {
+  // `parent` is the enclosing call's name, "" at the top level.
+  std::optional<CsgNode> object(const Call& call, ContextId ctx, std::string_view parent) {
     const scene_file::Modifier* drop = nullptr;
     const scene_file::Modifier* root = nullptr;
     for (const auto& m : call.modifiers) {
       if (m.symbol == '%' || m.symbol == '*') drop = drop ? drop : &m;
       if (m.symbol == '!') root = root ? root : &m;
-      if (drop && root) {
-        throw SceneError(m.loc, fmt::format("modifiers '{}' and '{}' contradict each other",
-                                            drop->symbol, root->symbol));
-      }
+      if (drop && root) refuse_modifiers(*drop, *root, m.loc);
     }
-    if (is_setting(call.name)) {
-      throw SceneError(call.loc, fmt::format("{}() must be at the top level of the file, not "
-                                             "inside {}()",
-                                             call.name, ctx.parent));
-    }
-    if (root && !ctx.dropped) {
-      if (root_) {
-        throw SceneError(root->loc, fmt::format("only one '!' (root) modifier is allowed; the "
-                                                "first is at {}:{}",
-                                                root_loc_.line, root_loc_.col));
-      }
-      // As in OpenSCAD, the marked subtree alone is the scene: nothing above it
-      // (transforms, colours, materials) applies.
-      Context fresh;
-      root_loc_ = root->loc;
-      std::optional<CsgNode> node = build(call, fresh);
-      root_ = node ? std::move(*node) : empty_union(call.loc);
+    if (is_setting(call.name)) refuse_setting_inside(call, parent);
+    if (root && !contexts_[ctx].dropped) {
+      root_subtree(call, *root);
       return std::nullopt;
     }
     if (drop) {
-      Context inner = ctx;
-      inner.dropped = true;
-      build(call, inner);
+      dropped_subtree(call, ctx);
       return std::nullopt;
     }
     return build(call, ctx);
   }
 
-  std::optional<CsgNode> build(const Call& call, const Context& ctx) {
+  [[noreturn, gnu::noinline]] void refuse_modifiers(const scene_file::Modifier& drop,
+                                                    const scene_file::Modifier& root,
+                                                    const Loc& at) {
+    throw SceneError(at, fmt::format("modifiers '{}' and '{}' contradict each other", drop.symbol,
+                                     root.symbol));
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_setting_inside(const Call& call,
+                                                         std::string_view parent) {
+    throw SceneError(call.loc, fmt::format("{}() must be at the top level of the file, not "
+                                           "inside {}()",
+                                           call.name, parent));
+  }
+
+  // A '!' subtree: as in OpenSCAD, the marked subtree alone is the scene, and
+  // nothing above it (transforms, colours, materials) applies.
+  [[gnu::noinline]] void root_subtree(const Call& call, const scene_file::Modifier& mark) {
+    if (root_) {
+      throw SceneError(mark.loc, fmt::format("only one '!' (root) modifier is allowed; the "
+                                             "first is at {}:{}",
+                                             root_loc_.line, root_loc_.col));
+    }
+    root_loc_ = mark.loc;
+    contexts_.emplace_back();
+    std::optional<CsgNode> node = build(call, contexts_.size() - 1);
+    contexts_.pop_back();
+    root_ = node ? std::move(*node) : empty_union(call.loc);
+  }
+
+  // A '%' or '*' subtree: read and checked, then left out.
+  [[gnu::noinline]] void dropped_subtree(const Call& call, ContextId ctx) {
+    Context inner = contexts_[ctx];
+    inner.dropped = true;
+    contexts_.push_back(inner);
+    build(call, contexts_.size() - 1);
+    contexts_.pop_back();
+  }
+
+  std::optional<CsgNode> build(const Call& call, ContextId ctx) {
     std::string_view name = call.name;
     if (is_primitive(name)) {
       no_children(call);
       return primitive(call, ctx);
     }
     if (!is_object(name)) refuse_module(call);
-    Context inner = ctx;
-    inner.parent = name;
-    if (is_transform(name)) {
-      inner.transform = ctx.transform * scene_file::read_transform(call);
-      return pass_through_children(call, inner);
-    }
-    if (name == "color") {
-      scene_file::ColorSetting c = scene_file::read_color(call);
-      if (c.linear_rgb) inner.color = *c.linear_rgb;
-      inner.alpha = c.alpha;
-      return pass_through_children(call, inner);
-    }
-    if (name == "material") {
-      inner.material = scene_file::read_material(call, ctx.material);
-      return pass_through_children(call, inner);
+    if (is_transform(name) || name == "color" || name == "material") {
+      const ContextId inner = enter(call, ctx);
+      CsgNode node = pass_through_children(call, inner);
+      contexts_.pop_back();
+      return node;
     }
     scene_file::read_pass_through(call);
-    if (name == "render") return pass_through_children(call, inner);
+    if (name == "render") return pass_through_children(call, ctx);
     CsgNode node;
     node.op = name == "difference"     ? CsgOp::Difference
               : name == "intersection" ? CsgOp::Intersection
                                        : CsgOp::Union;
     node.loc = call.loc;
-    node.children = children(call, inner);
+    node.children = children(call, ctx);
     return node;
   }
 
-  std::vector<CsgNode> children(const Call& call, const Context& ctx) {
+  // The context a transform, color() or material() gives its children, pushed
+  // onto contexts_.
+  [[gnu::noinline]] ContextId enter(const Call& call, ContextId ctx) {
+    Context inner = contexts_[ctx];
+    if (is_transform(call.name)) {
+      inner.transform = inner.transform * scene_file::read_transform(call);
+    } else if (call.name == "color") {
+      scene_file::ColorSetting c = scene_file::read_color(call);
+      if (c.linear_rgb) inner.color = *c.linear_rgb;
+      inner.alpha = c.alpha;
+    } else {
+      inner.material = scene_file::read_material(call, inner.material);
+    }
+    contexts_.push_back(inner);
+    return contexts_.size() - 1;
+  }
+
+  std::vector<CsgNode> children(const Call& call, ContextId ctx) {
     std::vector<CsgNode> out;
     out.reserve(call.children.size());
     for (const Call& child : call.children) {
-      if (auto node = object(child, ctx)) out.push_back(std::move(*node));
+      if (auto node = object(child, ctx, call.name)) out.push_back(std::move(*node));
     }
     return out;
   }
 
   // Transforms, colours, materials and render() are not CSG operators: one child
   // passes through, several form their union (as in OpenSCAD).
-  CsgNode pass_through_children(const Call& call, const Context& ctx) {
+  CsgNode pass_through_children(const Call& call, ContextId ctx) {
     // A single child, by far the most common case, needs no list of nodes.
     if (call.children.size() == 1) {
-      std::optional<CsgNode> node = object(call.children.front(), ctx);
+      std::optional<CsgNode> node = object(call.children.front(), ctx, call.name);
       return node ? std::move(*node) : empty_union(call.loc);
     }
     return pass_through(call, children(call, ctx));
@@ -266,7 +313,14 @@ class Interpreter {
     return node;
   }
 
-  CsgNode primitive(const Call& call, const Context& ctx) {
+  [[gnu::noinline]] CsgNode primitive(const Call& call, ContextId id) {
+    if (all_primitives_.size() == max_primitives_) {
+      throw SceneError(call.loc, fmt::format("more than {} primitives: capsim reads at most {} "
+                                             "(each needs about 1.7 KB of memory until it is "
+                                             "traced)",
+                                             max_primitives_, max_primitives_));
+    }
+    const Context& ctx = contexts_[id];
     Primitive p = scene_file::read_primitive(call);
     p.to_world = ctx.transform * p.to_world;
     bool finite = true;
@@ -300,6 +354,10 @@ class Interpreter {
   }
 
   std::shared_ptr<const std::string> file_;
+  std::size_t max_primitives_;
+  // The contexts of the calls being walked, outermost first. Levels refer to
+  // them by index, never by reference across a call, as the list grows.
+  std::vector<Context> contexts_;
   Scene scene_;
   std::vector<Primitive> all_primitives_;  // including those of dropped subtrees
   std::optional<CsgNode> root_;            // the '!' subtree, if any
@@ -310,8 +368,21 @@ class Interpreter {
 
 }  // namespace
 
-Scene parse_scene(std::string_view text, const std::string& file_name) {
+namespace {
+
+[[noreturn]] void refuse_file_size(const std::shared_ptr<const std::string>& file,
+                                   std::size_t max_bytes) {
+  throw SceneError(SourceLoc{file, 0, 0},
+                   fmt::format("the file is larger than {} bytes ({} MiB), the most capsim reads "
+                               "(reading takes up to about 100 bytes of memory per byte)",
+                               max_bytes, max_bytes >> 20));
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::string& file_name, const ParseLimits& limits) {
   auto file = std::make_shared<const std::string>(file_name);
+  if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
   Loc end;
   // Holds the lists of the calls (see scene_syntax.h); declared first, so it
@@ -322,24 +393,31 @@ Scene parse_scene(std::string_view text, const std::string& file_name) {
   // The calls view the text, not the tokens: the tokens' memory can go back to
   // the heap for the scene about to be built.
   std::vector<scene_file::Token>().swap(tokens);
-  return Interpreter(file).run(calls, has_statements, end);
+  return Interpreter(file, limits.max_primitives).run(calls, has_statements, end);
 }
 
-Scene parse_scene_file(const std::string& path) {
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits) {
   auto file = std::make_shared<const std::string>(path);
   SourceLoc whole_file{file, 0, 0};
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
   if (!f) throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
+  // A regular file's size is known before reading; others are refused when
+  // the reading passes the limit.
+  std::error_code size_error;
+  const std::uintmax_t size = std::filesystem::file_size(path, size_error);
+  if (!size_error && size > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::string text;
   char buffer[1 << 16];
   for (;;) {
     size_t n = std::fread(buffer, 1, sizeof buffer, f.get());
     text.append(buffer, n);
+    // Stops one buffer past the limit: a larger file is never held whole.
+    if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
     if (n < sizeof buffer) break;
   }
   if (std::ferror(f.get()))
     throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
-  return parse_scene(text, path);
+  return parse_scene(text, path, limits);
 }
 
 }  // namespace capsim

@@ -65,15 +65,20 @@ PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   if (ps.tree_template.empty())
     throw SceneError(start, "the scene has no objects to draw (every branch is empty)");
   ps.placed.resize(ps.prims.size());
-  std::size_t placed = 0;
-  for (std::size_t i = 0; i < ps.prims.size(); ++i) {
+  for (std::size_t i = 0; i < ps.prims.size(); ++i)
     ps.placed[i] = ps.tree_template.present(static_cast<std::uint32_t>(i));
-    placed += ps.placed[i];
-  }
 
   const Aabb universe = universe_of(ps.prims, ps.placed);
-  const int n = options.grid > 0 ? options.grid : auto_grid_divisions(placed);
-  ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts);
+  const int n = options.grid > 0 ? options.grid : fitted_grid_divisions(ps.prims, ps.placed, universe);
+  try {
+    ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts);
+  } catch (const VoxelGridTooLarge& e) {
+    // The automatic divisions keep within the limit by their bounding-box
+    // count, which is never below generate_voxels' own.
+    throw std::invalid_argument(
+        fmt::format("--grid {}: {}; use fewer divisions, or --grid auto, which keeps within it",
+                    n, e.what()));
+  }
 
   const ImageSize size = image_size(scene, options);
   if (scene.camera) {

@@ -208,9 +208,13 @@ class Lexer {
           if (pos_ + 1 >= text_.size()) {
             throw SceneError(token.loc, "unterminated string: '\"' has no closing '\"'");
           }
-          throw SceneError(here(), fmt::format("unsupported escape '\\{}' in string; supported: "
-                                               "\\\" \\\\ \\n \\t \\r",
-                                               e));
+          const auto byte = static_cast<unsigned char>(e);
+          throw SceneError(
+              here(), fmt::format("unsupported escape {} in string; supported: "
+                                  "\\\" \\\\ \\n \\t \\r",
+                                  byte >= 0x21 && byte < 0x7f
+                                      ? fmt::format("'\\{}'", e)
+                                      : fmt::format("'\\' followed by byte 0x{:02X}", byte)));
         }
         advance(2);
         continue;
@@ -267,11 +271,72 @@ std::string decode_string(std::string_view raw) {
   return decoded;
 }
 
+namespace {
+
+// The length of the well-formed UTF-8 sequence of two or more bytes starting at
+// text[i] (RFC 3629: no overlong forms, no surrogates, nothing above U+10FFFF),
+// or 0 if there is none.
+size_t utf8_sequence_length(std::string_view text, size_t i) {
+  const auto byte = [&](size_t k) {
+    return k < text.size() ? static_cast<unsigned char>(text[k]) : 0u;
+  };
+  const auto continuation = [&](size_t k, unsigned lo = 0x80, unsigned hi = 0xBF) {
+    return byte(k) >= lo && byte(k) <= hi;
+  };
+  const unsigned lead = byte(i);
+  if (lead >= 0xC2 && lead <= 0xDF) return continuation(i + 1) ? 2 : 0;
+  if (lead >= 0xE0 && lead <= 0xEF) {
+    const unsigned lo = lead == 0xE0 ? 0xA0 : 0x80, hi = lead == 0xED ? 0x9F : 0xBF;
+    return continuation(i + 1, lo, hi) && continuation(i + 2) ? 3 : 0;
+  }
+  if (lead >= 0xF0 && lead <= 0xF4) {
+    const unsigned lo = lead == 0xF0 ? 0x90 : 0x80, hi = lead == 0xF4 ? 0x8F : 0xBF;
+    return continuation(i + 1, lo, hi) && continuation(i + 2) && continuation(i + 3) ? 4 : 0;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::string quoted(std::string_view text) {
+  std::string out = "\"";
+  for (size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c >= 0x80) {
+      if (size_t n = utf8_sequence_length(text, i)) {
+        out.append(text.substr(i, n));
+        i += n;
+      } else {
+        out += fmt::format("\\x{:02X}", c);
+        ++i;
+      }
+      continue;
+    }
+    switch (c) {
+      case '"': out += "\\\""; break;
+      case '\\': out += "\\\\"; break;
+      case '\0': out += "\\0"; break;
+      case '\n': out += "\\n"; break;
+      case '\t': out += "\\t"; break;
+      case '\r': out += "\\r"; break;
+      default:
+        if (c < 0x20 || c == 0x7f) {
+          out += fmt::format("\\x{:02X}", c);
+        } else {
+          out += static_cast<char>(c);
+        }
+    }
+    ++i;
+  }
+  out += '"';
+  return out;
+}
+
 std::string describe(const Token& token) {
   switch (token.kind) {
     case TokenKind::Identifier: return fmt::format("'{}'", token.text);
     case TokenKind::Number: return fmt::format("number {}", token.text);
-    case TokenKind::String: return fmt::format("string \"{}\"", decode_string(token.text));
+    case TokenKind::String: return "string " + quoted(decode_string(token.text));
     case TokenKind::Symbol: return fmt::format("'{}'", token.text);
     case TokenKind::End: return "end of file";
   }

@@ -53,4 +53,11 @@ std::string decode_string(std::string_view raw);
 // How a token reads in an error message: `'foo'`, `number 1.5`, `end of file`.
 std::string describe(const Token& token);
 
+// Text from the scene (a string's value) in double quotes, as an error message
+// can show it whole on any terminal: printable ASCII and well-formed UTF-8 as
+// they are, with a backslash before '"' and before a backslash; NUL as \0;
+// newline, tab and carriage return as \n, \t and \r; any other control
+// character, and every byte that is not part of well-formed UTF-8, as \xNN.
+std::string quoted(std::string_view text);
+
 }  // namespace capsim::scene_file

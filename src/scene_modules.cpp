@@ -316,10 +316,10 @@ double unit_component(const Value& item, const std::string& what) {
 std::string unknown_color_message(std::string_view text) {
   std::string guess = closest_name(text, color_names());
   return fmt::format(
-      "unknown colour \"{}\"{}; use a CSS/SVG colour name (e.g. \"red\", "
+      "unknown colour {}{}; use a CSS/SVG colour name (e.g. \"red\", "
       "\"steelblue\"), \"#rgb\", \"#rgba\", \"#rrggbb\", \"#rrggbbaa\" or a vector "
       "[r, g, b] / [r, g, b, a] of numbers in [0, 1]",
-      text, guess.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", guess));
+      quoted(text), guess.empty() ? "" : fmt::format(" (did you mean \"{}\"?)", guess));
 }
 
 }  // namespace

@@ -71,6 +71,36 @@ class Reader {
     throw SceneError(t.loc, message);
   }
 
+  // One level of nesting, entered at `opener` (the first token of a call's
+  // children, '{' or '[') for as long as it lives.
+  class Nesting {
+   public:
+    Nesting(Reader& reader, const Token& opener) : reader_(reader) {
+      if (++reader_.depth_ > kMaxNestingDepth) {
+        reader_.fail(opener, fmt::format("nesting deeper than {} levels is not supported (calls' "
+                                         "children, {{ }} blocks and [ ] vectors inside one "
+                                         "another)",
+                                         kMaxNestingDepth));
+      }
+    }
+    ~Nesting() { --reader_.depth_; }
+    Nesting(const Nesting&) = delete;
+    Nesting& operator=(const Nesting&) = delete;
+
+   private:
+    Reader& reader_;
+  };
+
+  static bool is_modifier(const Token& t) {
+    return t.kind == TokenKind::Symbol &&
+           (t.text == "%" || t.text == "#" || t.text == "!" || t.text == "*");
+  }
+
+  // The reader recurses a few frames per level of nesting, up to
+  // kMaxNestingDepth levels, so the recursive functions keep their frames
+  // small: a call is built in place in its list, and messages are composed in
+  // helpers kept out of line.
+
   // statement := ';' | '{' statement* '}' | modifier* call
   // Appends what it reads to `out` (a bare block's statements go straight in).
   void statement(std::pmr::vector<Call>& out) {
@@ -79,16 +109,32 @@ class Reader {
       return;
     }
     if (at_symbol("{")) {
+      Nesting level(*this, peek());
       const Token& open = take();
       block_rest(open, out);
       return;
     }
-    Call call(memory_);
-    while (peek().kind == TokenKind::Symbol &&
-           (peek().text == "%" || peek().text == "#" || peek().text == "!" || peek().text == "*")) {
+    // Built where it stays: while it is read, only its own lists grow, never
+    // `out`.
+    Call& call = out.emplace_back(memory_);
+    while (is_modifier(peek())) {
       const Token& m = take();
       call.modifiers.push_back(Modifier{m.text[0], m.loc});
     }
+    const Token& head = peek();
+    if (head.kind != TokenKind::Identifier || is_language_keyword(head.text) ||
+        !at_symbol("(", 1)) {
+      refuse_call_head(call);
+    }
+    call.name = head.text;
+    call.loc = head.loc;
+    take();
+    arguments(call);
+    body(call);
+  }
+
+  // Why the tokens after `call`'s modifiers do not start a call.
+  [[noreturn, gnu::noinline]] void refuse_call_head(const Call& call) const {
     const Token& head = peek();
     if (head.kind != TokenKind::Identifier) {
       if (!call.modifiers.empty()) {
@@ -105,28 +151,23 @@ class Reader {
       fail(head, fmt::format("variable assignment '{} = ...' is not supported: {}", head.text,
                              kPlainTree));
     }
-    if (!at_symbol("(", 1)) {
-      fail(peek(1), fmt::format("expected '(' after '{}', got {}", head.text, describe(peek(1))));
-    }
-    call.name = head.text;
-    call.loc = head.loc;
-    take();
-    arguments(call);
-    body(call);
-    out.push_back(std::move(call));
+    fail(peek(1), fmt::format("expected '(' after '{}', got {}", head.text, describe(peek(1))));
   }
 
   // After an opening '{': statements up to the matching '}'.
   void block_rest(const Token& open, std::pmr::vector<Call>& out) {
-    Loc open_loc = open.loc;
     while (!at_symbol("}")) {
-      if (peek().kind == TokenKind::End) {
-        fail(peek(), fmt::format("missing '}}': the '{{' at {}:{} is not closed", open_loc.line,
-                                 open_loc.col));
-      }
+      if (peek().kind == TokenKind::End) refuse_unclosed(open, '{', '}');
       statement(out);
     }
     take();
+  }
+
+  // The end of the file where `open`'s closing `close` should be.
+  [[noreturn, gnu::noinline]] void refuse_unclosed(const Token& open, char opening,
+                                                   char close) const {
+    fail(peek(), fmt::format("missing '{}': the '{}' at {}:{} is not closed", close, opening,
+                             open.loc.line, open.loc.col));
   }
 
   // body := ';' | '{' statement* '}' | statement (a single child)
@@ -137,21 +178,20 @@ class Reader {
     }
     call.has_body = true;
     call.body_loc = peek().loc;
+    Nesting level(*this, peek());
     if (at_symbol("{")) {
       const Token& open = take();
       block_rest(open, call.children);
       return;
     }
     const Token& next = peek();
-    bool starts_statement =
-        next.kind == TokenKind::Identifier ||
-        (next.kind == TokenKind::Symbol &&
-         (next.text == "%" || next.text == "#" || next.text == "!" || next.text == "*"));
-    if (!starts_statement) {
-      fail(next, fmt::format("expected ';', '{{' or a child object after {}(...), got {}",
-                             call.name, describe(next)));
-    }
+    if (next.kind != TokenKind::Identifier && !is_modifier(next)) refuse_body(call);
     statement(call.children);
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_body(const Call& call) const {
+    fail(peek(), fmt::format("expected ';', '{{' or a child object after {}(...), got {}",
+                             call.name, describe(peek())));
   }
 
   // arguments := '(' [argument {',' argument} [',']] ')'
@@ -182,7 +222,7 @@ class Reader {
   }
 
   // Something other than the expected separator follows a complete value.
-  [[noreturn]] void after_value(std::string_view closer) {
+  [[noreturn, gnu::noinline]] void after_value(std::string_view closer) {
     const Token& t = peek();
     if (is_operator(t)) {
       fail(t, fmt::format("expressions are not supported (found operator '{}' after a value); "
@@ -225,30 +265,32 @@ class Reader {
       v.number = -n.number;
       return v;
     }
+    if (t.text != "[") refuse_value();
+    Nesting level(*this, t);
+    take();
+    v.kind = Value::Kind::Vector;
+    size_t first = pending_items_.size();
+    while (!at_symbol("]")) {
+      if (peek().kind == TokenKind::End) refuse_unclosed(t, '[', ']');
+      pending_items_.push_back(value());
+      if (at_symbol(",")) {
+        take();
+      } else if (!at_symbol("]")) {
+        after_value("]");
+      }
+    }
+    take();
+    take_pending_items(first, v.items);
+    return v;
+  }
+
+  // Why the symbol at pos_ does not start a value.
+  [[noreturn, gnu::noinline]] void refuse_value() const {
+    const Token& t = peek();
     if (t.text == "-" && peek(1).kind == TokenKind::Identifier &&
         (peek(1).text == "inf" || peek(1).text == "nan")) {
       fail(t,
            fmt::format("'-{}' is not a finite number; every number must be finite", peek(1).text));
-    }
-    if (t.text == "[") {
-      take();
-      v.kind = Value::Kind::Vector;
-      size_t first = pending_items_.size();
-      while (!at_symbol("]")) {
-        if (peek().kind == TokenKind::End) {
-          fail(peek(),
-               fmt::format("missing ']': the '[' at {}:{} is not closed", v.loc.line, v.loc.col));
-        }
-        pending_items_.push_back(value());
-        if (at_symbol(",")) {
-          take();
-        } else if (!at_symbol("]")) {
-          after_value("]");
-        }
-      }
-      take();
-      take_pending_items(first, v.items);
-      return v;
     }
     if (t.text == "-" || t.text == "+" || t.text == "!" || t.text == "(") {
       fail(t, fmt::format("expressions are not supported (found '{}'); write every argument as "
@@ -303,6 +345,7 @@ class Reader {
   const std::vector<Token>& tokens_;
   std::pmr::memory_resource* memory_;
   size_t pos_ = 0;
+  int depth_ = 0;  // levels of nesting open at pos_
   // The items of the vectors being read, innermost last. Collecting them here
   // rather than growing each vector's own list gives every vector a single
   // allocation of its final size (a monotonic resource never reuses what a

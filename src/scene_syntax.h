@@ -64,10 +64,17 @@ struct Call {
   bool has_body = false;  // false for `name(...);`
 };
 
+// How deep calls, bare blocks and vectors may nest inside one another: each
+// call's children, each bare `{ }` block and each `[ ]` is one level. Every
+// stage that walks the tree (this reader, the interpreter, the status tree)
+// recurses once or a few times per level, so the limit bounds their stack
+// use; docs/scene-format.md gives the figures.
+inline constexpr int kMaxNestingDepth = 1000;
+
 // The top-level calls of a file in order, their lists drawn from `memory`, which
 // must outlive them. `end` receives the End token's location (for errors about
 // the file as a whole). Throws SceneError on any syntax outside the supported
-// subset.
+// subset, and on nesting deeper than kMaxNestingDepth.
 std::pmr::vector<Call> read_calls(const std::vector<Token>& tokens,
                                   std::pmr::memory_resource* memory, Loc* end);
 

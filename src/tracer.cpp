@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace capsim {
 
@@ -30,6 +31,68 @@ void insert_sorted(std::vector<Crossing>& pending, const Crossing& c) {
   std::size_t k = pending.size() - 1;
   for (; k > 0 && later(c, pending[k - 1]); --k) pending[k] = pending[k - 1];
   pending[k] = c;
+}
+
+// Moves `fresh` (crossings in no order) into `pending` (sorted latest-first):
+// sorted, then merged from the back, in O(m log m) plus the pending crossings
+// nearer than the latest new one. `later` orders the crossings of a ray
+// strictly (a primitive has one entry and one exit per ray), so the result is
+// the one that inserting them one by one gives.
+void merge_fresh(std::vector<Crossing>& pending, std::vector<Crossing>& fresh) {
+  std::sort(fresh.begin(), fresh.end(), [](const Crossing& a, const Crossing& b) { return later(a, b); });
+  std::size_t old_end = pending.size(), next = fresh.size();
+  pending.resize(old_end + next);
+  std::size_t out = pending.size();
+  while (next > 0) {
+    if (old_end > 0 && later(fresh[next - 1], pending[old_end - 1])) {
+      pending[--out] = pending[--old_end];
+    } else {
+      pending[--out] = fresh[--next];
+    }
+  }
+  fresh.clear();
+}
+
+// Intersects the primitives of one voxel that the ray has not met yet (the
+// mailbox): a primitive the ray starts in toggles its leaf at once, every
+// crossing ahead goes to `add`.
+template <typename AddCrossing>
+void meet_primitives(std::span<const std::uint32_t> voxel,
+                     const std::vector<PreparedPrimitive>& prims, const Ray& ray,
+                     Tracer::Scratch& s, OpCounts& ops, AddCrossing add) {
+  for (const std::uint32_t p : voxel) {
+    if (s.mailbox[p] == s.stamp) continue;
+    s.mailbox[p] = s.stamp;
+    LineSpan span;
+    if (!intersect_line(prims[p], ray, span, ops)) continue;
+    if (span.t_exit <= ray.tmin || span.t_enter >= ray.tmax) continue;
+    if (span.t_enter <= ray.tmin) {
+      // The ray starts inside this primitive: its leaf is inside from the
+      // start. Every such primitive holds the start point, so it is met in the
+      // first voxel, before any crossing is evaluated.
+      s.tree.toggle(p, ops);
+    } else {
+      add(Crossing{span.t_enter, p, span.enter_surface, true});
+      ++ops.hits_sorted;
+    }
+    if (span.t_exit < ray.tmax) {
+      add(Crossing{span.t_exit, p, span.exit_surface, false});
+      ++ops.hits_sorted;
+    }
+  }
+}
+
+// A voxel usually holds a few primitives, whose crossings enter the pending
+// ones one by one. One that holds more (up to thousands of coincident
+// primitives) has its crossings gathered and merged at once: one by one, the
+// m crossings would cost O(m^2).
+constexpr std::size_t kCrowdedVoxel = 8;
+
+[[gnu::noinline]] void meet_crowded_voxel(std::span<const std::uint32_t> voxel,
+                                          const std::vector<PreparedPrimitive>& prims,
+                                          const Ray& ray, Tracer::Scratch& s, OpCounts& ops) {
+  meet_primitives(voxel, prims, ray, s, ops, [&](const Crossing& c) { s.fresh.push_back(c); });
+  merge_fresh(s.pending, s.fresh);
 }
 
 // x^e for the Phong highlight. Whole exponents (as materials usually give) go by
@@ -68,6 +131,7 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   half_height_ = std::tan(0.5 * c.fov_deg * std::acos(-1.0) / 180.0);
   half_width_ = half_height_ * static_cast<double>(c.width) / c.height;
   epsilon_ = scene_epsilon(scene);
+  crowded_voxels_ = scene.grid.largest_voxel > kCrowdedVoxel;
 }
 
 Ray Tracer::screen_ray(double u, double v) const {
@@ -81,6 +145,11 @@ Ray Tracer::screen_ray(double u, double v) const {
 }
 
 bool Tracer::first_hit(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
+  return crowded_voxels_ ? walk<true>(ray, s, ops, hit) : walk<false>(ray, s, ops, hit);
+}
+
+template <bool kMayBeCrowded>
+bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
   const VoxelGrid& grid = scene_.grid;
   if (++s.stamp == 0) {
     std::fill(s.mailbox.begin(), s.mailbox.end(), 0);
@@ -94,25 +163,12 @@ bool Tracer::first_hit(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) cons
   ++ops.dda_setups;
   do {
     // Intersect only this voxel's primitives, each once per ray (the mailbox).
-    for (const std::uint32_t p : grid.voxel(dda.voxel())) {
-      if (s.mailbox[p] == s.stamp) continue;
-      s.mailbox[p] = s.stamp;
-      LineSpan span;
-      if (!intersect_line(scene_.prims[p], ray, span, ops)) continue;
-      if (span.t_exit <= ray.tmin || span.t_enter >= ray.tmax) continue;
-      if (span.t_enter <= ray.tmin) {
-        // The ray starts inside this primitive: its leaf is inside from the
-        // start. Every such primitive holds the start point, so it is met in the
-        // first voxel, before any crossing is evaluated.
-        s.tree.toggle(p, ops);
-      } else {
-        insert_sorted(s.pending, {span.t_enter, p, span.enter_surface, true});
-        ++ops.hits_sorted;
-      }
-      if (span.t_exit < ray.tmax) {
-        insert_sorted(s.pending, {span.t_exit, p, span.exit_surface, false});
-        ++ops.hits_sorted;
-      }
+    const std::span<const std::uint32_t> voxel = grid.voxel(dda.voxel());
+    if (kMayBeCrowded && voxel.size() > kCrowdedVoxel) {
+      meet_crowded_voxel(voxel, scene_.prims, ray, s, ops);
+    } else {
+      meet_primitives(voxel, scene_.prims, ray, s, ops,
+                      [&](const Crossing& c) { insert_sorted(s.pending, c); });
     }
     // Evaluate, nearest first, the crossings inside this voxel; later ones wait
     // for their voxel, where primitives not yet met may come before them.

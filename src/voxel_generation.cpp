@@ -4,6 +4,8 @@
 
 #include "capsim/voxel_grid.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -181,16 +183,29 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
   }
 }
 
+// The voxel index range [lo, hi] per axis of a world-axis box b.
+struct VoxelRange {
+  glm::ivec3 lo, hi;
+  std::size_t count() const {
+    return static_cast<std::size_t>(hi.x - lo.x + 1) * static_cast<std::size_t>(hi.y - lo.y + 1) *
+           static_cast<std::size_t>(hi.z - lo.z + 1);
+  }
+};
+
+VoxelRange voxel_range(const Aabb& b, const Aabb& u, int n, const glm::dvec3& vs, double eps) {
+  return {{clamp_index((b.lo.x - eps - u.lo.x) / vs.x, n),
+           clamp_index((b.lo.y - eps - u.lo.y) / vs.y, n),
+           clamp_index((b.lo.z - eps - u.lo.z) / vs.z, n)},
+          {clamp_index((b.hi.x + eps - u.lo.x) / vs.x, n),
+           clamp_index((b.hi.y + eps - u.lo.y) / vs.y, n),
+           clamp_index((b.hi.z + eps - u.lo.z) / vs.z, n)}};
+}
+
 // The voxel entries of a world-axis box b, as (voxel index) appended to out: the
 // plain bounding-box placement that Algorithm-3 is measured against.
 void place_bounding_box(const Aabb& b, const Aabb& u, int n, const glm::dvec3& vs, double eps,
                         std::vector<std::uint32_t>& out) {
-  const glm::ivec3 lo{clamp_index((b.lo.x - eps - u.lo.x) / vs.x, n),
-                      clamp_index((b.lo.y - eps - u.lo.y) / vs.y, n),
-                      clamp_index((b.lo.z - eps - u.lo.z) / vs.z, n)};
-  const glm::ivec3 hi{clamp_index((b.hi.x + eps - u.lo.x) / vs.x, n),
-                      clamp_index((b.hi.y + eps - u.lo.y) / vs.y, n),
-                      clamp_index((b.hi.z + eps - u.lo.z) / vs.z, n)};
+  const auto [lo, hi] = voxel_range(b, u, n, vs, eps);
   for (int z = lo.z; z <= hi.z; ++z)
     for (int y = lo.y; y <= hi.y; ++y)
       for (int x = lo.x; x <= hi.x; ++x) out.push_back(static_cast<std::uint32_t>((z * n + y) * n + x));
@@ -214,6 +229,7 @@ VoxelGrid build_grid(const Aabb& universe, int n, const Placements& placed) {
   const std::size_t cells = static_cast<std::size_t>(n) * n * n;
   g.offsets.assign(cells + 1, 0);
   for (std::uint32_t v : placed.voxels) ++g.offsets[v + 1];
+  g.largest_voxel = *std::max_element(g.offsets.begin(), g.offsets.end());
   for (std::size_t v = 0; v < cells; ++v) g.offsets[v + 1] += g.offsets[v];
   g.items.resize(g.offsets[cells]);
   std::vector<std::uint32_t> fill(g.offsets.begin(), g.offsets.end() - 1);
@@ -252,6 +268,12 @@ VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
   for (std::size_t i = 0; i < prims.size(); ++i) {
     if (placed[i]) place_primitive(prims[i], universe, n, vs, eps, placements.voxels, counts);
     placements.end_primitive();
+    if (placements.voxels.size() > kMaxVoxelEntries) {
+      throw VoxelGridTooLarge(fmt::format(
+          "a voxel grid of {0}x{0}x{0} would hold more than {1} (voxel, primitive) entries, "
+          "the most capsim allows",
+          n, kMaxVoxelEntries));
+    }
   }
   VoxelGrid g = build_grid(universe, n, placements);
   if (counts) counts->voxel_entries += g.entries();
@@ -269,6 +291,26 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
     placements.end_primitive();
   }
   return build_grid(universe, n, placements);
+}
+
+std::size_t bounding_box_entries(const std::vector<PreparedPrimitive>& prims,
+                                 const std::vector<bool>& placed, const Aabb& universe, int n) {
+  const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
+  const double eps = grid_epsilon(universe);
+  std::size_t entries = 0;
+  for (std::size_t i = 0; i < prims.size(); ++i)
+    if (placed[i]) entries += voxel_range(prims[i].world_bounds, universe, n, vs, eps).count();
+  return entries;
+}
+
+int fitted_grid_divisions(const std::vector<PreparedPrimitive>& prims,
+                          const std::vector<bool>& placed, const Aabb& universe) {
+  const auto placed_count = static_cast<std::size_t>(std::count(placed.begin(), placed.end(), true));
+  const std::size_t budget =
+      std::min(kMaxVoxelEntries, kAutoVoxelEntriesPerPrimitive * placed_count);
+  int n = auto_grid_divisions(placed_count);
+  while (n > 1 && bounding_box_entries(prims, placed, universe, n) > budget) --n;
+  return n;
 }
 
 int auto_grid_divisions(std::size_t placed_primitives) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -538,6 +539,41 @@ TEST(ParserRefusesConstructs, UnsupportedModuleNestedInTree) {
                       24, "'hull' is not supported: only union, difference and intersection"));
 }
 
+// The refusal says what capsim lacks for the module: 2-D shapes and the
+// extrusions that turn them into solids are not refused as if they were CSG
+// operators.
+TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
+  const char* shapes[][2] = {
+      {"square", "square(2);"},         {"circle", "circle(2);"},
+      {"polygon", "polygon([[0, 0], [1, 0], [0, 1]]);"},
+      {"text", "text(\"hi\");"},       {"offset", "offset(r = 1) square();"},
+      {"projection", "projection() cube();"},
+  };
+  for (auto& s : shapes) {
+    EXPECT_TRUE(Refused(s[1], 1, 1,
+                        fmt::format("'{}' is not supported: 2-D shapes are not supported; capsim "
+                                    "traces only the solids sphere, cube and cylinder, exactly; "
+                                    "supported: sphere, cube, cylinder,",
+                                    s[0])))
+        << s[0];
+  }
+  const char* extrusions[][2] = {
+      {"linear_extrude", "linear_extrude(height = 1) square();"},
+      {"rotate_extrude", "rotate_extrude() circle(1);"},
+  };
+  for (auto& e : extrusions) {
+    EXPECT_TRUE(Refused(e[1], 1, 1,
+                        fmt::format("'{}' is not supported: extrusions are not supported: they make "
+                                    "solids out of 2-D shapes, and capsim traces only the solids "
+                                    "sphere, cube and cylinder, exactly; supported:",
+                                    e[0])))
+        << e[0];
+  }
+  EXPECT_TRUE(Refused("resize([1, 1, 1]) cube();", 1, 1,
+                      "'resize' is not supported: resizing to the children's bounds is not "
+                      "supported; use scale(); supported:"));
+}
+
 TEST(ParserRefusesConstructs, UnknownModuleSuggestsSpelling) {
   EXPECT_TRUE(
       Refused("sphre(1);", 1, 1, "unknown module 'sphre' (did you mean 'sphere'?); supported:"));
@@ -819,6 +855,35 @@ TEST(ParserRefusesSyntax, UnterminatedStringAndComment) {
   EXPECT_TRUE(Refused("color(\"r\\ed\") cube();", 1, 9, "unsupported escape '\\e' in string"));
 }
 
+// Strings the messages quote are shown whole and on one line: a NUL no longer
+// ends the message, and bytes that are not UTF-8 are not written raw.
+TEST(ParserRefusesSyntax, QuotedStringsAreEscaped) {
+  using namespace std::string_literals;
+  EXPECT_TRUE(Refused("cube();\n\"a\0b\";"s, 2, 1,
+                      R"(expected an object such as sphere(), cube() or cylinder(), got string "a\0b")"));
+  EXPECT_TRUE(Refused("color(\"re\0d\") cube();"s, 1, 7, R"(unknown colour "re\0d" (did you mean "red"?); use)"));
+  EXPECT_TRUE(Refused("color(\"gr\xFCn\") cube();", 1, 7, R"(unknown colour "gr\xFCn"; use)"));
+  // Well-formed UTF-8 is kept; a truncated sequence, an overlong form and a
+  // surrogate are not well-formed.
+  EXPECT_TRUE(Refused("color(\"gr\xC3\xBCn\") cube();", 1, 7, "unknown colour \"gr\xC3\xBCn\"; use"));
+  EXPECT_TRUE(Refused("color(\"\xE2\x82\") cube();", 1, 7, R"(unknown colour "\xE2\x82"; use)"));
+  EXPECT_TRUE(Refused("color(\"\xC0\xAF\") cube();", 1, 7, R"(unknown colour "\xC0\xAF"; use)"));
+  EXPECT_TRUE(Refused("color(\"\xED\xA0\x80\") cube();", 1, 7, R"(unknown colour "\xED\xA0\x80"; use)"));
+  // Control characters, quotes and backslashes, decoded or raw.
+  EXPECT_TRUE(Refused("color(\"a\\n\\\"\\\\\x01\x7f\tb\") cube();", 1, 7,
+                      R"(unknown colour "a\n\"\\\x01\x7F\tb"; use)"));
+  EXPECT_TRUE(Refused("color(\"a\\\xC3\xA9\") cube();", 1, 9,
+                      R"(unsupported escape '\' followed by byte 0xC3 in string)"));
+  EXPECT_TRUE(Refused("color(\"a\\\0\") cube();"s, 1, 9,
+                      R"(unsupported escape '\' followed by byte 0x00 in string)"));
+  try {
+    parse("\"\0\";"s);
+    ADD_FAILURE() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).size(), std::strlen(e.what()));
+  }
+}
+
 TEST(ParserRefusesSyntax, StrayCharacters) {
   EXPECT_TRUE(Refused("cube();\n  @cube();", 2, 3, "unexpected character '@'"));
   EXPECT_TRUE(Refused("cube(size = 1)`;", 1, 15, "unexpected character '`'"));
@@ -836,6 +901,108 @@ TEST(ParserRefusesSyntax, EmptyFileAndNoObjects) {
 TEST(ParserRefusesSyntax, ErrorInsideDroppedSubtreeStillRefused) {
   EXPECT_TRUE(Refused("cube();\n%sphere(r = -1);", 2, 13, "must be positive"));
   EXPECT_TRUE(Refused("cube();\n*polyhedron();", 2, 2, "'polyhedron' is not supported"));
+}
+
+// ---------------------------------------------------------------- nesting depth
+
+std::string repeated(std::string_view text, int times) {
+  std::string out;
+  out.reserve(text.size() * static_cast<size_t>(times));
+  for (int i = 0; i < times; ++i) out += text;
+  return out;
+}
+
+// How many operator nodes lie above the first leaf (by first children).
+int depth_of_first_leaf(const CsgNode& root) {
+  int depth = 0;
+  for (const CsgNode* n = &root; !n->is_leaf; n = &n->children.at(0)) ++depth;
+  return depth;
+}
+
+constexpr std::string_view kTooDeep =
+    "nesting deeper than 1000 levels is not supported (calls' children, { } blocks and [ ] "
+    "vectors inside one another)";
+
+// The documented limit, 1000 levels, is read whole by every kind of nesting.
+TEST(ParserNesting, AThousandLevelsAreRead) {
+  Scene unions = parse(repeated("union() {", 1000) + "sphere();" + repeated("}", 1000));
+  EXPECT_EQ(depth_of_first_leaf(unions.root), 1001);  // the file's own union on top
+  Scene moved = parse(repeated("translate([1, 0, 0])\n", 1000) + "sphere();");
+  ASSERT_EQ(moved.primitives.size(), 1u);
+  EXPECT_TRUE(Near(apply(moved.primitives[0].to_world, {0, 0, 0}), {1000, 0, 0}));
+  EXPECT_EQ(parse(repeated("{", 1000) + "sphere();" + repeated("}", 1000)).primitives.size(), 1u);
+  EXPECT_TRUE(Refused("sphere(r = " + repeated("[", 1000) + "1" + repeated("]", 1000) + ");", 1,
+                      12, "argument 'r' of sphere must be a number, got a vector of 1 element"));
+}
+
+// One level more is refused where it opens, whatever the kinds that add up to
+// it; the files of the report, which crashed, are refused at level 1001.
+TEST(ParserNesting, DeeperIsRefusedWhereTheLimitIsPassed) {
+  EXPECT_TRUE(Refused(repeated("union() {", 1001) + "sphere();" + repeated("}", 1001), 1,
+                      9 * 1001, kTooDeep));
+  // The vector of the 1001st translate is inside 1000 calls.
+  EXPECT_TRUE(Refused(repeated("translate([1, 0, 0])\n", 1001) + "sphere();", 1001, 11, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("rotate(90)\n", 1001) + "sphere();", 1002, 1, kTooDeep));
+  EXPECT_TRUE(Refused("sphere(r = " + repeated("[", 1001) + "1" + repeated("]", 1001) + ");", 1,
+                      12 + 1000, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("union() {", 500) + repeated("{", 500) + "sphere(r = [1]);" +
+                          repeated("}", 1000),
+                      1, 9 * 500 + 500 + 12, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("union() {", 5000) + "sphere(1);" + repeated("}", 5000), 1,
+                      9 * 1001, kTooDeep));
+  EXPECT_TRUE(Refused(repeated("{", 3000), 1, 1001, kTooDeep));
+  EXPECT_TRUE(Refused("sphere(r=" + repeated("[", 100000) + "1" + repeated("]", 100000) + ");", 1,
+                      10 + 1000, kTooDeep));
+}
+
+// ---------------------------------------------------------------- size limits
+
+TEST(ParserLimits, DefaultsAreTheDocumentedOnes) {
+  EXPECT_EQ(ParseLimits{}.max_file_bytes, 32u << 20);
+  EXPECT_EQ(ParseLimits{}.max_primitives, 1000000u);
+}
+
+// A file past the size limit is refused as a whole before it is parsed.
+TEST(ParserLimits, FileLargerThanTheLimitIsRefusedUnread) {
+  std::string text = "sphere();" + std::string((32u << 20) - 9, ' ');
+  EXPECT_EQ(parse(text).primitives.size(), 1u);
+  text += ' ';
+  try {
+    parse(text);
+    FAIL() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "t.csg: the file is larger than 33554432 bytes (32 MiB), the most capsim reads "
+                 "(reading takes up to about 100 bytes of memory per byte)");
+    EXPECT_EQ(e.loc().line, 0);
+  }
+  const std::string path =
+      (std::filesystem::temp_directory_path() / "capsim_parser_test_large.csg").string();
+  std::ofstream(path) << "sphere(); cube(); cylinder();";
+  try {
+    parse_scene_file(path, ParseLimits{28, 10});
+    FAIL() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ": the file is larger than 28 bytes (0 MiB), the most "
+                                            "capsim reads (reading takes up to about 100 bytes of "
+                                            "memory per byte)");
+  }
+  EXPECT_EQ(parse_scene_file(path, ParseLimits{29, 10}).primitives.size(), 3u);
+  std::filesystem::remove(path);
+}
+
+// The primitive past the limit is refused where it stands; dropped ones count,
+// as they are read and held too.
+TEST(ParserLimits, PrimitivePastTheLimitIsRefusedWhereItStands) {
+  const ParseLimits three{1 << 20, 3};
+  EXPECT_EQ(parse_scene("sphere(); cube();\n%cylinder();", kFile, three).primitives.size(), 2u);
+  try {
+    parse_scene("sphere(); cube();\n%cylinder(); translate([1, 0, 0]) sphere();", kFile, three);
+    FAIL() << "parsed";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(), "t.csg:2:35: more than 3 primitives: capsim reads at most 3 (each needs "
+                           "about 1.7 KB of memory until it is traced)");
+  }
 }
 
 TEST(ParserFile, UnreadableFile) {

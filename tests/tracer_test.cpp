@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
+#include <stdexcept>
 #include <random>
 #include <span>
 
@@ -272,6 +274,67 @@ TEST(VoxelGeneration, IsConservativeAndTighterThanBoundingBoxes) {
       }
     }
   }
+}
+
+// Many copies of one shape: at auto_grid_divisions' 25 divisions each of 2000
+// coincident spheres would fill the whole grid (31 million entries, growing
+// as the square of the copies); the automatic grid takes fewer divisions and
+// keeps to 512 entries per primitive.
+TEST(VoxelGeneration, CoincidentPrimitivesKeepTheAutomaticGridSmall) {
+  const Scene sc = make_scene(std::vector<Primitive>(2000, sphere({0, 0, 0}, 1)));
+  PrepareOptions o;
+  o.width = o.height = 8;
+  const PreparedScene ps = prepare_scene(sc, o);
+  EXPECT_EQ(auto_grid_divisions(2000), 25);
+  EXPECT_EQ(ps.grid.n, 8);
+  EXPECT_LE(ps.grid.entries(), kAutoVoxelEntriesPerPrimitive * 2000);
+  EXPECT_LE(bounding_box_entries(ps.prims, ps.placed, ps.grid.universe, 8), kAutoVoxelEntriesPerPrimitive * 2000);
+  EXPECT_GT(bounding_box_entries(ps.prims, ps.placed, ps.grid.universe, 9), kAutoVoxelEntriesPerPrimitive * 2000);
+  // Their crossings, all at one t, still give the first sphere's surface.
+  const Tracer tracer(ps, {});
+  Tracer::Scratch scratch(ps);
+  OpCounts ops;
+  Hit hit;
+  ASSERT_TRUE(tracer.first_hit(ray({0, -5, 0.25}, {0, 1, 0}), scratch, ops, hit));
+  EXPECT_EQ(hit.primitive, 0u);
+  EXPECT_DOUBLE_EQ(hit.t, 5 - std::sqrt(1 - 0.25 * 0.25));
+  EXPECT_EQ(ops.sphere_tests, 2000u);
+  EXPECT_EQ(ops.hits_sorted, 4000u);
+}
+
+// Where primitives overlap little the automatic grid is auto_grid_divisions'.
+TEST(VoxelGeneration, SeparatePrimitivesKeepTheAutomaticDivisions) {
+  std::vector<Primitive> prims;
+  for (int x = 0; x < 10; ++x)
+    for (int y = 0; y < 10; ++y)
+      for (int z = 0; z < 10; ++z) prims.push_back(sphere({2.0 * x, 2.0 * y, 2.0 * z}, 0.8));
+  PrepareOptions o;
+  o.width = o.height = 8;
+  const PreparedScene ps = prepare_scene(make_scene(prims), o);
+  EXPECT_EQ(ps.grid.n, auto_grid_divisions(1000));
+  EXPECT_EQ(ps.grid.n, 20);
+  EXPECT_EQ(ps.grid.entries(), 8000u);
+}
+
+// A grid chosen with --grid that would pass kMaxVoxelEntries is refused with
+// the reason, not built: three boxes filling a 256^3 grid need 50 million.
+TEST(VoxelGeneration, ExplicitGridPastTheEntryLimitIsRefused) {
+  EXPECT_EQ(kMaxVoxelEntries, 33554432u);
+  const Scene sc = make_scene({box({0, 0, 0}, {1, 1, 1}), box({0, 0, 0}, {1, 1, 1}), box({0, 0, 0}, {1, 1, 1})});
+  PrepareOptions o;
+  o.width = o.height = 8;
+  o.grid = 256;
+  try {
+    prepare_scene(sc, o);
+    FAIL() << "prepared";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(),
+                 "--grid 256: a voxel grid of 256x256x256 would hold more than 33554432 (voxel, "
+                 "primitive) entries, the most capsim allows; use fewer divisions, or --grid auto, "
+                 "which keeps within it");
+  }
+  o.grid = 128;  // 3 x 128^3 = 6.3 million
+  EXPECT_EQ(prepare_scene(sc, o).grid.entries(), 3u * 128 * 128 * 128);
 }
 
 TEST(Tracer, GridSizeDoesNotChangeTheImage) {

@@ -5,14 +5,27 @@
 
 #include "capsim/scene.h"
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 
 namespace capsim {
 
+// How large a scene the parser takes on. Its memory grows with both: up to
+// about 100 bytes per byte of file while reading (a token, and a value or a
+// call, for every few bytes), and about 1.7 KB per primitive through
+// preparation (docs/scene-format.md gives the measurements).
+struct ParseLimits {
+  std::size_t max_file_bytes = std::size_t{32} << 20;  // 32 MiB
+  std::size_t max_primitives = 1'000'000;              // dropped ones ('%', '*') included
+};
+
 // Throws SceneError ("FILE:LINE:COL: message") on any input outside the supported
-// subset and on every bad value; never returns a partial scene.
-Scene parse_scene(std::string_view text, const std::string& file_name);
-Scene parse_scene_file(const std::string& path);
+// subset and on every bad value; never returns a partial scene. A file past the
+// size limit is refused as a whole ("FILE: message") before it is parsed, a
+// primitive past the limit where it stands.
+Scene parse_scene(std::string_view text, const std::string& file_name,
+                  const ParseLimits& limits = {});
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits = {});
 
 }  // namespace capsim

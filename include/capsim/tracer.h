@@ -54,6 +54,7 @@ class Tracer {
       bool enter;  // entering the primitive; at equal t entries go first
     };
     std::vector<Crossing> pending;  // crossings met but not yet evaluated, latest first
+    std::vector<Crossing> fresh;    // crossings met in the current voxel, not yet in pending
   };
 
   Tracer(const PreparedScene& scene, TraceOptions options);
@@ -77,6 +78,10 @@ class Tracer {
   const TraceOptions& options() const { return options_; }
 
  private:
+  // first_hit's walk; kMayBeCrowded: some voxel holds so many primitives that
+  // their crossings are merged into the pending ones at once (tracer.cpp).
+  template <bool kMayBeCrowded>
+  bool walk(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
   glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, Hit* first) const;
   bool occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
                 OpCounts& ops) const;
@@ -86,6 +91,7 @@ class Tracer {
   glm::dvec3 cam_origin_, cam_forward_, cam_right_, cam_up_;
   double half_height_ = 1, half_width_ = 1;
   double epsilon_ = 0;  // offset of spawned rays, relative to the universe size
+  bool crowded_voxels_ = false;  // the walk must watch for crowded voxels
 };
 
 }  // namespace capsim

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <span>
+#include <stdexcept>
 #include <vector>
 
 namespace capsim {
@@ -19,6 +20,7 @@ struct VoxelGrid {
   // v = (z * n + y) * n + x, in ascending primitive order.
   std::vector<std::uint32_t> offsets;
   std::vector<std::uint32_t> items;
+  std::uint32_t largest_voxel = 0;  // the most primitives any voxel holds
 
   int index(int x, int y, int z) const { return (z * n + y) * n + x; }
   std::span<const std::uint32_t> voxel(int v) const {
@@ -28,6 +30,23 @@ struct VoxelGrid {
 };
 
 inline constexpr int kMaxGridDivisions = 256;
+
+// The most (voxel, primitive) entries a grid may hold: 4 bytes each, and
+// generation holds them twice at its peak (256 MiB at the limit).
+inline constexpr std::size_t kMaxVoxelEntries = std::size_t{1} << 25;
+
+// The average entries per placed primitive that the automatic grid keeps to:
+// as many as a primitive filling an 8 x 8 x 8 block of voxels has. Separate
+// primitives put about 8 each (Table 4-2's optimum); where they overlap a lot
+// (hundreds of copies of one shape), the divisions auto_grid_divisions gives
+// would make every primitive fill the grid, and fewer serve the rays better.
+inline constexpr std::size_t kAutoVoxelEntriesPerPrimitive = 512;
+
+// Thrown by generate_voxels when the entries would pass kMaxVoxelEntries.
+class VoxelGridTooLarge : public std::length_error {
+ public:
+  using std::length_error::length_error;
+};
 
 // The universe: the union of the placed primitives' world bounds, padded so that
 // no primitive touches its faces.
@@ -39,7 +58,8 @@ Aabb universe_of(const std::vector<PreparedPrimitive>& prims, const std::vector<
 // (Zmax = min over front faces of the max over the column's corners, Zmin = max
 // over back faces of the min); the primitive is recorded in the voxels between.
 // The primitive's world axis-aligned bounds act as extra circumscribing planes.
-// Conservative: every voxel the primitive's surface touches holds it.
+// Conservative: every voxel the primitive's surface touches holds it. Throws
+// VoxelGridTooLarge rather than hold more than kMaxVoxelEntries entries.
 VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
                           const std::vector<bool>& placed, const Aabb& universe, int n,
                           VoxelGenCounts* counts);
@@ -51,5 +71,17 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
 
 // The automatic division count (docs/architecture.md gives the rule and its fit).
 int auto_grid_divisions(std::size_t placed_primitives);
+
+// The entries generate_voxels_aabb would make: an upper bound of
+// generate_voxels' count, found in O(primitives) without placing anything.
+std::size_t bounding_box_entries(const std::vector<PreparedPrimitive>& prims,
+                                 const std::vector<bool>& placed, const Aabb& universe, int n);
+
+// The divisions of --grid auto: auto_grid_divisions' count, or fewer while the
+// bounding-box entries would pass kAutoVoxelEntriesPerPrimitive per placed
+// primitive or kMaxVoxelEntries (never fewer than 1). Unchanged for primitives
+// that overlap little, as in every shipped scene.
+int fitted_grid_divisions(const std::vector<PreparedPrimitive>& prims,
+                          const std::vector<bool>& placed, const Aabb& universe);
 
 }  // namespace capsim
