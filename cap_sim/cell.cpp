@@ -129,6 +129,9 @@ Process Cell::run() {
           wire_.timeline.span(track_, "wait for corners", "wait", waiting, wire_.kernel.now());
       }
       check_has_every_corner(exchange);
+      // A later unit's corners are of later frames, so the record stays ascending.
+      record_.corners_received.insert(record_.corners_received.end(), unit_received_.begin(), unit_received_.end());
+      unit_received_.clear();
       record_.exchange += wire_.kernel.now() - exchange_start;
 
       // Phase 3: subdivide its own pixels where their corners differ by the
@@ -183,20 +186,20 @@ void Cell::take_in(const LinkMessage& m, const CornerExchange& exchange) {
   const CornerMessage& sent = exchange.sends(m.from, step).at(m.payload / 2);
   if (sent.to != id_)
     throw std::logic_error(fmt::format("{} took in corners sent to {}", cell_name(id_), cell_name(sent.to)));
-  record_.corners_received.insert(record_.corners_received.end(), sent.corners.begin(), sent.corners.end());
+  unit_received_.insert(unit_received_.end(), sent.corners.begin(), sent.corners.end());
 }
 
 void Cell::check_holds(const CornerMessage& m, const CornerExchange& exchange) {
   // What it relays must have reached it: its own corners, or ones taken in.
-  std::sort(record_.corners_received.begin(), record_.corners_received.end());
+  std::sort(unit_received_.begin(), unit_received_.end());
   for (const CornerIndex c : m.corners)
     if (exchange.owner(c) != id_ &&
-        !std::binary_search(record_.corners_received.begin(), record_.corners_received.end(), c))
+        !std::binary_search(unit_received_.begin(), unit_received_.end(), c))
       throw std::logic_error(fmt::format("{} relays corner {} before it came", cell_name(id_), c));
 }
 
 void Cell::check_has_every_corner(const CornerExchange& exchange) {
-  std::vector<CornerIndex>& got = record_.corners_received;
+  std::vector<CornerIndex>& got = unit_received_;
   std::sort(got.begin(), got.end());
   const std::vector<CornerIndex>& needs = exchange.needs(id_);
   if (!std::includes(got.begin(), got.end(), needs.begin(), needs.end()))

@@ -83,6 +83,7 @@ class Cell {
   Mailbox<BusTransfer> bus_inbox_;
   Mailbox<LinkMessage> link_inbox_;
   std::vector<LinkMessage> early_;  // horizontal messages that came before the vertical ones
+  std::vector<CornerIndex> unit_received_;  // corners taken in during this unit's exchange
   std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced
   CellRecord record_;
 };
