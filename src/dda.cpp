@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace capsim {
 
@@ -20,28 +21,34 @@ bool clip_slab(double o, double d, double inv, double lo, double hi, double& t0,
   return t0 <= t1;
 }
 
+// A direction component below the least normal double moves the ray by less
+// than 1e-278 over any distance the scene's range allows (docs/scene-format.md),
+// and its reciprocal would overflow: the walk takes it as zero.
+double walked(double d) { return std::abs(d) >= std::numeric_limits<double>::min() ? d : 0.0; }
+
 }  // namespace
 
 bool Dda3::setup(const VoxelGrid& grid, const Ray& ray) {
   const Aabb& u = grid.universe;
+  const glm::dvec3 dir(walked(ray.dir.x), walked(ray.dir.y), walked(ray.dir.z));
   // The only divisions of the walk: one per axis, here in the set-up.
-  const glm::dvec3 inv(ray.dir.x != 0 ? 1.0 / ray.dir.x : 0.0, ray.dir.y != 0 ? 1.0 / ray.dir.y : 0.0,
-                       ray.dir.z != 0 ? 1.0 / ray.dir.z : 0.0);
+  const glm::dvec3 inv(dir.x != 0 ? 1.0 / dir.x : 0.0, dir.y != 0 ? 1.0 / dir.y : 0.0,
+                       dir.z != 0 ? 1.0 / dir.z : 0.0);
   double t0 = ray.tmin, t1 = ray.tmax;
-  if (!clip_slab(ray.origin.x, ray.dir.x, inv.x, u.lo.x, u.hi.x, t0, t1) ||
-      !clip_slab(ray.origin.y, ray.dir.y, inv.y, u.lo.y, u.hi.y, t0, t1) ||
-      !clip_slab(ray.origin.z, ray.dir.z, inv.z, u.lo.z, u.hi.z, t0, t1))
+  if (!clip_slab(ray.origin.x, dir.x, inv.x, u.lo.x, u.hi.x, t0, t1) ||
+      !clip_slab(ray.origin.y, dir.y, inv.y, u.lo.y, u.hi.y, t0, t1) ||
+      !clip_slab(ray.origin.z, dir.z, inv.z, u.lo.z, u.hi.z, t0, t1))
     return false;
 
   n_ = grid.n;
   t_in_ = t0;
   t_end_ = t1;
-  const glm::dvec3 entry = ray.at(t0);
-  start_axis(entry.x, ray.origin.x, ray.dir.x, inv.x, u.lo.x, grid.voxel_size.x, grid.inv_voxel_size.x, vx_,
+  const glm::dvec3 entry = ray.origin + t0 * dir;
+  start_axis(entry.x, ray.origin.x, dir.x, inv.x, u.lo.x, grid.voxel_size.x, grid.inv_voxel_size.x, vx_,
              incre_x_, tx_, dtx_);
-  start_axis(entry.y, ray.origin.y, ray.dir.y, inv.y, u.lo.y, grid.voxel_size.y, grid.inv_voxel_size.y, vy_,
+  start_axis(entry.y, ray.origin.y, dir.y, inv.y, u.lo.y, grid.voxel_size.y, grid.inv_voxel_size.y, vy_,
              incre_y_, ty_, dty_);
-  start_axis(entry.z, ray.origin.z, ray.dir.z, inv.z, u.lo.z, grid.voxel_size.z, grid.inv_voxel_size.z, vz_,
+  start_axis(entry.z, ray.origin.z, dir.z, inv.z, u.lo.z, grid.voxel_size.z, grid.inv_voxel_size.z, vz_,
              incre_z_, tz_, dtz_);
   return true;
 }
@@ -51,7 +58,7 @@ void Dda3::start_axis(double entry, double origin, double dir, double inv, doubl
   // entry lies in the universe (up to rounding), so the offset is >= 0 or a
   // hair below, and truncation is the floor there (it is a plain conversion,
   // where std::floor is a library call on baseline x86-64).
-  v = std::clamp(static_cast<int>((entry - lo) * inv_size), 0, n_ - 1);
+  v = clamped_voxel_index((entry - lo) * inv_size, n_);
   if (dir == 0) {
     // Never crosses a plane of this axis.
     incre = 0;

@@ -5,8 +5,11 @@
 
 #include "capsim/parser.h"
 
+#include "capsim/scene_range.h"
+
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -333,6 +336,7 @@ class Interpreter {
                                              "range of a double)",
                                              call.name));
     }
+    check_placement(call, p);
     p.color = ctx.color;
     p.alpha = ctx.alpha;
     p.material = ctx.material;
@@ -342,6 +346,28 @@ class Interpreter {
     leaf.primitive = static_cast<int>(all_primitives_.size()) - 1;
     leaf.loc = call.loc;
     return leaf;
+  }
+
+  // The range of scene_range.h a placed primitive must keep to, whatever the
+  // transforms around it: its bounding box within kMaxLength of the origin,
+  // and no dimension below kMinLength.
+  static void check_placement(const Call& call, const Primitive& p) {
+    static_assert(kMinLength == 1e-30 && kMaxLength == 1e30, "the messages name the range");
+    const Aabb bounds = placed_bounds(p);
+    const glm::dvec3 far = glm::max(glm::abs(bounds.lo), glm::abs(bounds.hi));
+    const double reach = std::max({far.x, far.y, far.z});
+    if (!(reach <= kMaxLength)) {
+      throw SceneError(call.loc, fmt::format("{} is placed beyond the coordinates capsim traces: "
+                                             "its bounding box reaches {:g} from the origin, past "
+                                             "1e30",
+                                             call.name, reach));
+    }
+    const double stretch = smallest_stretch(glm::dmat3(p.to_world));
+    if (!(stretch >= kMinLength)) {
+      throw SceneError(call.loc, fmt::format("{} is smaller than capsim traces: its smallest "
+                                             "dimension is {:g}, below 1e-30",
+                                             call.name, stretch));
+    }
   }
 
   void compact(CsgNode& node) {

@@ -1,5 +1,7 @@
 #include "capsim/prepared_scene.h"
 
+#include "capsim/scene_range.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -69,6 +71,7 @@ PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
     ps.placed[i] = ps.tree_template.present(static_cast<std::uint32_t>(i));
 
   const Aabb universe = universe_of(ps.prims, ps.placed);
+  check_scene_range(scene, ps.prims, ps.placed, universe);
   const int n = options.grid > 0 ? options.grid : fitted_grid_divisions(ps.prims, ps.placed, universe);
   try {
     ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts);

@@ -155,8 +155,8 @@ bool intersect_cone(const glm::dvec3& o, const glm::dvec3& d, double r1, double 
 
 }  // namespace
 
-Aabb object_bounds(const PreparedPrimitive& p) {
-  switch (p.kind) {
+Aabb object_bounds(PrimitiveKind kind) {
+  switch (kind) {
     case PrimitiveKind::Sphere:
       return {glm::dvec3(-1), glm::dvec3(1)};
     case PrimitiveKind::Box:

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "capsim/scene_range.h"
 #include "scene_args.h"
 #include "scene_colors.h"
 
@@ -119,13 +120,51 @@ double positive(const Args& args, std::string_view name, double fallback) {
   return v;
 }
 
+// A length given by argument `name` (value `v`, positive or, for a cone's
+// radius, zero): refused outside [kMinLength, kMaxLength]. The message calls
+// it `label`, or "argument 'NAME' of MODULE" when that is empty.
+void check_length(const Args& args, std::string_view name, double v, std::string_view label = {}) {
+  static_assert(kMinLength == 1e-30 && kMaxLength == 1e30, "the messages name the range");
+  if (v <= kMaxLength && (v == 0 || v >= kMinLength)) return;
+  const std::string what = label.empty() ? args.what(name) : std::string(label);
+  args.fail_value(name, v > kMaxLength ? fmt::format("{} must be at most 1e30, the largest length "
+                                                     "capsim traces, got {}",
+                                                     what, v)
+                                       : fmt::format("{} must be at least 1e-30, the smallest "
+                                                     "length capsim traces, got {}",
+                                                     what, v));
+}
+
+// A point given by argument `name`: refused beyond kMaxLength in any coordinate.
+glm::dvec3 point(const Args& args, std::string_view name, glm::dvec3 fallback, std::string_view what) {
+  glm::dvec3 v = args.vec3(name, fallback);
+  if (!(std::abs(v.x) <= kMaxLength && std::abs(v.y) <= kMaxLength && std::abs(v.z) <= kMaxLength)) {
+    args.fail_value(name, fmt::format("{} must lie within 1e30 of the origin in every "
+                                      "coordinate, the farthest capsim traces, got {}",
+                                      what, vec_str(v)));
+  }
+  return v;
+}
+
+// A weight (material term or light intensity): at most kMaxWeight.
+double weight(const Args& args, std::string_view name, double v) {
+  static_assert(kMaxWeight == 1e6, "the message names the limit");
+  if (args.has(name) && v > kMaxWeight) {
+    args.fail_value(name, fmt::format("{} must be at most 1e6, got {}", args.what(name), v));
+  }
+  return v;
+}
+
 Primitive read_sphere(const Call& call) {
   Args args(call, {"r"}, {"d"});
   if (args.has("r") && args.has("d")) {
     throw SceneError(args.name_loc(later(args, "r", "d")),
                      "sphere takes either r or d, not both (OpenSCAD would ignore r)");
   }
-  double r = args.has("d") ? positive(args, "d", 2) / 2 : positive(args, "r", 1);
+  const std::string_view given = args.has("d") ? "d" : "r";
+  const double value = positive(args, given, given == "d" ? 2 : 1);
+  check_length(args, given, value);
+  double r = given == "d" ? value / 2 : value;
   Primitive p;
   p.kind = PrimitiveKind::Sphere;
   p.to_world = scaling(glm::dvec3(r));
@@ -141,6 +180,7 @@ Primitive read_cube(const Call& call) {
                                             ? fmt::format("{}", size.x)
                                             : vec_str(size)));
   }
+  for (int i = 0; i < 3; ++i) check_length(args, "size", size[i], "cube size");
   bool center = args.boolean("center", false);
   Primitive p;
   p.kind = PrimitiveKind::Box;
@@ -160,6 +200,7 @@ std::optional<RadiusSource> first_given(const Args& args,
   for (std::string_view n : names) {
     if (args.has(n)) {
       double v = non_negative(args, n, 0);
+      check_length(args, n, v);
       return RadiusSource{n, n[0] == 'd' ? v / 2 : v};
     }
   }
@@ -169,6 +210,7 @@ std::optional<RadiusSource> first_given(const Args& args,
 Primitive read_cylinder(const Call& call) {
   Args args(call, {"h", "r1", "r2", "center"}, {"r", "d", "d1", "d2"});
   double h = positive(args, "h", 1);
+  check_length(args, "h", h);
   auto bottom = first_given(args, {"d1", "d", "r1", "r"});
   auto top = first_given(args, {"d2", "d", "r2", "r"});
   // A radius argument that neither end uses would be silently ignored: refuse it.
@@ -391,13 +433,19 @@ ColorSetting read_color(const Call& call) {
 Material read_material(const Call& call, const Material& enclosing) {
   Args args(call, {"diffuse", "specular", "shininess", "reflect", "transmit", "ior", "ambient"});
   Material m = enclosing;
-  m.diffuse = non_negative(args, "diffuse", m.diffuse);
-  m.specular = non_negative(args, "specular", m.specular);
+  m.diffuse = weight(args, "diffuse", non_negative(args, "diffuse", m.diffuse));
+  m.specular = weight(args, "specular", non_negative(args, "specular", m.specular));
   m.shininess = non_negative(args, "shininess", m.shininess);
   m.reflect = non_negative(args, "reflect", m.reflect);
   m.transmit = non_negative(args, "transmit", m.transmit);
   m.ior = positive(args, "ior", m.ior);
-  m.ambient = non_negative(args, "ambient", m.ambient);
+  static_assert(kMinIor == 1e-3 && kMaxIor == 1e3, "the message names the range");
+  if (args.has("ior") && !(m.ior >= kMinIor && m.ior <= kMaxIor)) {
+    args.fail_value("ior", fmt::format("argument 'ior' of material must be between 0.001 and "
+                                       "1000, got {}",
+                                       m.ior));
+  }
+  m.ambient = weight(args, "ambient", non_negative(args, "ambient", m.ambient));
   if (m.reflect + m.transmit > 1) {
     std::string_view culprit = args.has("reflect") && args.has("transmit")
                                    ? later(args, "reflect", "transmit")
@@ -423,8 +471,9 @@ void read_pass_through(const Call& call) {
 Camera read_camera(const Call& call) {
   Args args(call, {"eye", "center", "up", "fov", "size"});
   Camera cam;
-  cam.eye = args.vec3("eye", cam.eye);
-  cam.center = args.vec3("center", cam.center);
+  cam.eye = point(args, "eye", cam.eye, "camera eye");
+  cam.center = point(args, "center", cam.center, "camera center");
+  cam.loc = args.has("eye") ? args.value("eye").loc : call.loc;
   cam.up = args.vec3("up", cam.up);
   cam.fov_deg = args.number("fov", cam.fov_deg);
   if (args.has("fov") && !(cam.fov_deg > 0 && cam.fov_deg < 180)) {
@@ -480,11 +529,15 @@ Light read_light(const Call& call) {
   Args args(call, {"position", "color"});
   if (!args.has("position")) throw SceneError(call.loc, "light() needs position=[x, y, z]");
   Light light;
-  light.position = args.vec3("position", light.position);
+  light.position = point(args, "position", light.position, "light position");
   light.color = args.vec3("color", light.color);
   if (!(light.color.x >= 0 && light.color.y >= 0 && light.color.z >= 0)) {
     args.fail_value("color",
                     fmt::format("light color must not be negative, got {}", vec_str(light.color)));
+  }
+  if (!(light.color.x <= kMaxWeight && light.color.y <= kMaxWeight && light.color.z <= kMaxWeight)) {
+    args.fail_value("color", fmt::format("light color must be at most 1e6 in every component, got {}",
+                                         vec_str(light.color)));
   }
   return light;
 }

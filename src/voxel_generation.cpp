@@ -125,7 +125,7 @@ bool rect_meets_hull(const glm::dvec2& lo, const glm::dvec2& hi, const std::vect
   return true;
 }
 
-int clamp_index(double v, int n) { return std::clamp(static_cast<int>(std::floor(v)), 0, n - 1); }
+int clamp_index(double v, int n) { return clamped_voxel_index(v, n); }
 
 // The voxel entries of one primitive, as (voxel index) appended to out.
 void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm::dvec3& vs,

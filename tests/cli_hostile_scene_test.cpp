@@ -4,8 +4,11 @@
 
 #include "cli_run.h"
 
+#include <OpenImageIO/imageio.h>
+
 #include <fstream>
 #include <string>
+#include <vector>
 
 using namespace capsim::testing;
 
@@ -31,6 +34,14 @@ std::string write_scene(const TempDir& dir, const std::string& name, const std::
     return ::testing::AssertionFailure() << "status " << r.status << ", stderr: " << r.err;
   }
   return ::testing::AssertionSuccess();
+}
+
+// "e3.csg" from ("e", 3, ".csg").
+std::string numbered(const std::string& prefix, int k, const std::string& suffix) {
+  std::string name = prefix;
+  name += std::to_string(k);
+  name += suffix;
+  return name;
 }
 
 }  // namespace
@@ -91,4 +102,81 @@ TEST(CliHostileScene, FilePastTheSizeLimitIsRefused) {
   EXPECT_TRUE(RefusedAt(dir, large, "",
                         "the file is larger than 33554432 bytes (32 MiB), the most capsim reads "
                         "(reading takes up to about 100 bytes of memory per byte)"));
+}
+
+// The values of the report rendered blank images with undefined behaviour
+// (NaN converted to int) and exit 0; each is refused where it is written.
+TEST(CliHostileScene, ValuesOutsideTheRangeAreRefusedWhereWritten) {
+  TempDir dir;
+  const struct {
+    const char* text;
+    const char* where;
+    const char* message;
+  } cases[] = {
+      {"sphere(1e160);", "1:8", "argument 'r' of sphere must be at most 1e30"},
+      {"sphere(1e-300);", "1:8", "argument 'r' of sphere must be at least 1e-30"},
+      {"sphere(1e-320);", "1:8", "argument 'r' of sphere must be at least 1e-30"},
+      {"camera(eye=[1e300,0,0], center=[0,0,0], up=[0,0,1]);\nsphere(1);", "1:12",
+       "camera eye must lie within 1e30 of the origin"},
+      {"material(transmit=1, ior=1e300) sphere(1);", "1:26",
+       "argument 'ior' of material must be between 0.001 and 1000"},
+      {"translate([1.5e308,0,0]) sphere(1); translate([-1.5e308,0,0]) sphere(1);", "1:26",
+       "sphere is placed beyond the coordinates capsim traces"},
+      {"sphere(1);\ntranslate([1e7, 0, 0]) sphere(1);", "1:1", "this sphere is too small for the scene"},
+      {"camera(eye = [0, -1e7, 0]);\nsphere(1);", "1:14", "the camera eye is 1e+07 from the origin"},
+  };
+  int k = 0;
+  for (const auto& c : cases) {
+    const std::string scene = write_scene(dir, numbered("v", k++, ".csg"), c.text);
+    EXPECT_TRUE(RefusedAt(dir, scene, c.where, c.message)) << c.text;
+  }
+}
+
+namespace {
+
+// The share of the pixels of an EXR that a primitive covers (its alpha).
+double coverage(const std::string& path) {
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) return -1;
+  const OIIO::ImageSpec& spec = in->spec();
+  const int alpha = spec.channelindex("A");
+  std::vector<float> a(static_cast<std::size_t>(spec.width) * spec.height);
+  if (alpha < 0 || !in->read_image(0, 0, alpha, alpha + 1, OIIO::TypeDesc::FLOAT, a.data())) return -1;
+  double sum = 0;
+  for (float v : a) sum += v;
+  return sum / static_cast<double>(a.size());
+}
+
+}  // namespace
+
+// Scenes at the edges of the range render what they hold. A view 1e-306
+// degrees wide gave directions with subnormal components, whose reciprocals
+// overflowed in the 3DDDA: 320 of 1024 pixels missed the sphere that fills it.
+TEST(CliHostileScene, ScenesAtTheEdgesOfTheRangeRender) {
+  TempDir dir;
+  const struct {
+    const char* text;
+    double coverage;  // share of the 32x32 pixels the primitives cover
+  } cases[] = {
+      {"camera(eye = [0, -5, 0.3], center = [0, 0, 0.3], up = [0, 0, 1], fov = 1e-306);\nsphere(1);", 1.0},
+      {"sphere(1e30);", 216 / 1024.0},
+      {"sphere(1e-30);", 216 / 1024.0},
+      {"translate([9e29, 0, 0]) sphere(1e24);", 216 / 1024.0},
+      {"camera(eye = [0, -1.9e6, 0], center = [0, 0, 0], up = [0, 0, 1], fov = 1e-4);\nsphere(1);",
+       300 / 1024.0},
+      {"material(transmit = 1, ior = 1000) sphere(1);", 216 / 1024.0},
+      {"material(transmit = 1, ior = 0.001) sphere(1);", 216 / 1024.0},
+      {"material(diffuse = 1e6, specular = 1e6, ambient = 1e6, reflect = 0.5, transmit = 0.5) "
+       "sphere(1);\nlight(position = [0, -10, 0], color = [1e6, 1e6, 1e6]);\n"
+       "light(position = [1e30, -1e30, 0]);",
+       216 / 1024.0},
+  };
+  int k = 0;
+  for (const auto& c : cases) {
+    const std::string scene = write_scene(dir, numbered("e", k, ".csg"), c.text);
+    const std::string image = dir / numbered("e", k++, ".exr");
+    const RunResult r = run_capsim("render " + scene + " -o " + image + " --size 32x32", dir);
+    ASSERT_EQ(r.status, 0) << c.text << "\n" << r.err;
+    EXPECT_EQ(coverage(image), c.coverage) << c.text;
+  }
 }

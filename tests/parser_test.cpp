@@ -15,6 +15,7 @@
 #include <string>
 #include <string_view>
 
+#include "capsim/prepared_scene.h"
 #include "capsim/scene.h"
 
 namespace capsim {
@@ -712,6 +713,136 @@ TEST(ParserRefusesValues, NonFiniteNumbers) {
       Refused("sphere(r = 1e999);", 1, 12, "number '1e999' is out of the range of a double"));
   EXPECT_TRUE(Refused("cube(1e);", 1, 6, "malformed number '1e'"));
   EXPECT_TRUE(Refused("cube(1.2.3);", 1, 6, "malformed number '1.2.3'"));
+}
+
+// ---------------------------------------------------------------- range (docs: "Range")
+
+// The values of the report, which rendered blank with undefined behaviour,
+// are refused where they are written.
+TEST(ParserRange, ValuesOfTheReportAreRefusedWhereWritten) {
+  EXPECT_TRUE(Refused("sphere(1e160);", 1, 8,
+                      "argument 'r' of sphere must be at most 1e30, the largest length capsim "
+                      "traces, got 1e+160"));
+  EXPECT_TRUE(Refused("sphere(1e-300);", 1, 8,
+                      "argument 'r' of sphere must be at least 1e-30, the smallest length capsim "
+                      "traces, got 1e-300"));
+  EXPECT_TRUE(Refused("sphere(1e-320);", 1, 8, "argument 'r' of sphere must be at least 1e-30"));
+  EXPECT_TRUE(Refused("camera(eye=[1e300,0,0], center=[0,0,0], up=[0,0,1]);\nsphere(1);", 1, 12,
+                      "camera eye must lie within 1e30 of the origin in every coordinate, the "
+                      "farthest capsim traces, got [1e+300, 0, 0]"));
+  EXPECT_TRUE(Refused("material(transmit=1, ior=1e300) sphere(1);", 1, 26,
+                      "argument 'ior' of material must be between 0.001 and 1000, got 1e+300"));
+  EXPECT_TRUE(Refused("translate([1.5e308,0,0]) sphere(1); translate([-1.5e308,0,0]) sphere(1);",
+                      1, 26,
+                      "sphere is placed beyond the coordinates capsim traces: its bounding box "
+                      "reaches 1.5e+308 from the origin, past 1e30"));
+}
+
+TEST(ParserRange, LengthsOfPrimitives) {
+  EXPECT_EQ(parse("sphere(1e30); sphere(1e-30); sphere(d = 2e-30);").primitives.size(), 3u);
+  EXPECT_TRUE(Refused("sphere(d = 3e30);", 1, 12, "argument 'd' of sphere must be at most 1e30"));
+  EXPECT_TRUE(Refused("cube([1, 2e30, 1]);", 1, 6,
+                      "cube size must be at most 1e30, the largest length capsim traces, got 2e+30"));
+  EXPECT_TRUE(Refused("cube(1e-31);", 1, 6, "cube size must be at least 1e-30"));
+  EXPECT_TRUE(Refused("cylinder(h = 1e-31, r = 1);", 1, 14,
+                      "argument 'h' of cylinder must be at least 1e-30"));
+  EXPECT_TRUE(Refused("cylinder(h = 1, r1 = 1e-31, r2 = 1);", 1, 22,
+                      "argument 'r1' of cylinder must be at least 1e-30"));
+  EXPECT_TRUE(Refused("cylinder(h = 1, d = 1e31);", 1, 21,
+                      "argument 'd' of cylinder must be at most 1e30"));
+  EXPECT_EQ(parse("cylinder(h = 1e-30, r1 = 0, r2 = 1e-30); cylinder(h = 1e30, d = 1e30);")
+                .primitives.size(),
+            2u);
+}
+
+// What the transforms around a primitive make of it is checked at the
+// primitive: its bounding box within 1e30 of the origin, its smallest
+// dimension (smallest singular value of its placement) at least 1e-30.
+TEST(ParserRange, PlacementsOfPrimitives) {
+  EXPECT_TRUE(Refused("translate([9e29, 0, 0])\n  sphere(2e29);", 2, 3,
+                      "sphere is placed beyond the coordinates capsim traces: its bounding box "
+                      "reaches 1.1e+30 from the origin, past 1e30"));
+  EXPECT_EQ(parse("translate([9e29, 0, 0]) sphere(1e29);").primitives.size(), 1u);
+  EXPECT_TRUE(Refused("scale(1e-20) scale(1e-20) cube(1e-3);", 1, 27,
+                      "cube is smaller than capsim traces: its smallest dimension is 1e-43, below "
+                      "1e-30"));
+  // A shear keeps every edge of the box 1e-20 long or more but makes it
+  // 7e-32 thin (a flatness the singular-matrix test allows: 1e-11).
+  EXPECT_TRUE(Refused("multmatrix([[1e-20, 0, 0, 0], [0, 1e-20, 1e-20, 0], [0, 0, 1e-31, 0]]) cube();",
+                      1, 72, "cube is smaller than capsim traces: its smallest dimension is "
+                             "7.07107e-32, below 1e-30"));
+  EXPECT_EQ(parse("scale(1e-15) scale(1e-15) sphere(1);").primitives.size(), 1u);
+}
+
+TEST(ParserRange, CameraLightsAndMaterials) {
+  EXPECT_TRUE(Refused("camera(eye = [0, -5, 0], center = [0, 0, -2e30]);\nsphere(1);", 1, 35,
+                      "camera center must lie within 1e30 of the origin"));
+  EXPECT_TRUE(Refused("light(position = [0, 0, 1e31]);\nsphere(1);", 1, 18,
+                      "light position must lie within 1e30 of the origin"));
+  EXPECT_TRUE(Refused("light(position = [0, 0, 9], color = [1, 2e6, 1]);\nsphere(1);", 1, 37,
+                      "light color must be at most 1e6 in every component, got [1, 2000000, 1]"));
+  EXPECT_TRUE(Refused("material(ior = 0.0009) sphere(1);", 1, 16,
+                      "argument 'ior' of material must be between 0.001 and 1000, got 0.0009"));
+  EXPECT_TRUE(Refused("material(diffuse = 1e7) sphere(1);", 1, 20,
+                      "argument 'diffuse' of material must be at most 1e6, got 10000000"));
+  EXPECT_TRUE(Refused("material(specular = 1e7) sphere(1);", 1, 21,
+                      "argument 'specular' of material must be at most 1e6"));
+  EXPECT_TRUE(Refused("material(ambient = 1e7) sphere(1);", 1, 20,
+                      "argument 'ambient' of material must be at most 1e6"));
+  Scene s = parse("camera(eye = [1e30, 0, 0]);\nlight(position = [-1e30, 0, 0], color = [1e6, 0, 0]);\n"
+                  "material(ior = 1000, diffuse = 1e6, specular = 1e6, ambient = 1e6) sphere(1);\n"
+                  "material(ior = 0.001) sphere(1);");
+  EXPECT_EQ(s.primitives.size(), 2u);
+  EXPECT_EQ(s.camera->loc.line, 1);
+  EXPECT_EQ(s.camera->loc.col, 14);
+}
+
+// Bounds relative to the scene's size S (the largest extent of what is placed)
+// are checked when the scene is prepared, at the primitive or the camera.
+TEST(ParserRange, RelativeToTheSceneWhenPrepared) {
+  const auto prepared = [](std::string_view text) {
+    PrepareOptions o;
+    o.width = o.height = 8;
+    return prepare_scene(parse(text), o);
+  };
+  EXPECT_EQ(prepared("sphere(1);\ntranslate([2, 0, 0]) cube([1, 1, 1e-5]);").grid.n, 8);
+  try {
+    prepared("sphere(1);\ntranslate([3, 0, 0]) sphere(1e-6);");
+    FAIL() << "prepared";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.loc().line, 2);
+    EXPECT_EQ(e.loc().col, 22);
+    EXPECT_EQ(e.message(), "this sphere is too small for the scene: its smallest dimension 1e-06 is "
+                           "less than 1e-6 times the scene's size 4.00001, the finest detail capsim "
+                           "traces");
+  }
+  try {
+    prepared("sphere(1);\ntranslate([1e7, 0, 0]) sphere(2);");
+    FAIL() << "prepared";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.loc().line, 1);  // the first one too small for the scene of both
+    EXPECT_NE(e.message().find("this sphere is too small for the scene"), std::string::npos);
+  }
+  try {
+    prepared("translate([1e7, 0, 0]) sphere(1);");
+    FAIL() << "prepared";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.loc().col, 24);
+    EXPECT_EQ(e.message(), "this sphere reaches 1e+07 from the origin, more than 1e6 times the "
+                           "scene's size 2, the farthest capsim traces; move the scene "
+                           "nearer the origin");
+  }
+  try {
+    prepared("camera(eye = [0, -3e6, 0]);\nsphere(1);");
+    FAIL() << "prepared";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.loc().line, 1);
+    EXPECT_EQ(e.loc().col, 14);
+    EXPECT_EQ(e.message(), "the camera eye is 3e+06 from the origin, more than 1e6 times the "
+                           "scene's size 2, the farthest capsim traces from; move the eye "
+                           "nearer");
+  }
+  EXPECT_EQ(prepared("camera(eye = [0, -2e6, 0], fov = 1e-4);\nsphere(1);").camera.fov_deg, 1e-4);
 }
 
 TEST(ParserRefusesValues, UnknownArgumentListsAccepted) {

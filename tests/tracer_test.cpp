@@ -11,6 +11,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <random>
 #include <span>
@@ -122,6 +123,46 @@ TEST(Dda3, DiagonalRayStepsOneAxisAtATime) {
   EXPECT_EQ(dda.vx(), 7);
   EXPECT_GT(steps, 7);
   EXPECT_FALSE(dda.setup(g, ray({-1, -1, -1}, {-1, 0, 0})));
+}
+
+// The voxel index of any double, NaN and infinities included, is a voxel of
+// the grid; converting such values to int directly is undefined.
+TEST(Dda3, VoxelIndexIsDefinedForEveryDouble) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(clamped_voxel_index(nan, 8), 0);
+  EXPECT_EQ(clamped_voxel_index(-nan, 8), 0);
+  EXPECT_EQ(clamped_voxel_index(-kInfinity, 8), 0);
+  EXPECT_EQ(clamped_voxel_index(kInfinity, 8), 7);
+  EXPECT_EQ(clamped_voxel_index(1e300, 8), 7);
+  EXPECT_EQ(clamped_voxel_index(-1e300, 8), 0);
+  EXPECT_EQ(clamped_voxel_index(-0.5, 8), 0);
+  EXPECT_EQ(clamped_voxel_index(0, 8), 0);
+  EXPECT_EQ(clamped_voxel_index(3.999, 8), 3);
+  EXPECT_EQ(clamped_voxel_index(7.999, 8), 7);
+  EXPECT_EQ(clamped_voxel_index(8, 8), 7);
+}
+
+// A direction component below the least normal double (its reciprocal
+// overflows) is walked as zero. It made the next plane crossing 0 * inf =
+// NaN for a ray starting on a voxel plane, and then no crossing was ever
+// inside the voxel: the ray missed what it hit.
+TEST(Dda3, SubnormalDirectionComponentIsWalkedAsZero) {
+  VoxelGrid g;
+  g.universe = {glm::dvec3(0), glm::dvec3(4)};
+  g.n = 4;
+  g.voxel_size = glm::dvec3(1);
+  g.inv_voxel_size = glm::dvec3(1);
+  Dda3 dda;
+  ASSERT_TRUE(dda.setup(g, ray({3, -1, 2.5}, {-1e-310, 1, 0})));
+  EXPECT_DOUBLE_EQ(dda.t_in(), 1);
+  EXPECT_DOUBLE_EQ(dda.t_out(), 2);
+  std::vector<int> ys = {dda.vy()};
+  while (dda.step()) {
+    ys.push_back(dda.vy());
+    EXPECT_EQ(dda.vx(), 3);
+    EXPECT_EQ(dda.vz(), 2);
+  }
+  EXPECT_EQ(ys, (std::vector<int>{0, 1, 2, 3}));
 }
 
 TEST(StatusTree, DifferenceStopsEarlyWhenStatusDoesNotChange) {

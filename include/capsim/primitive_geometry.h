@@ -30,7 +30,8 @@ struct alignas(64) PreparedPrimitive {
 PreparedPrimitive prepare_primitive(const Primitive& p);
 
 // The object-space bounding box of a canonical primitive (before to_world).
-Aabb object_bounds(const PreparedPrimitive& p);
+Aabb object_bounds(PrimitiveKind kind);
+inline Aabb object_bounds(const PreparedPrimitive& p) { return object_bounds(p.kind); }
 
 // Which surface of the primitive a crossing lies on (box: face 0..5 as -x,+x,-y,+y,
 // -z,+z; cone: 0 side, 1 cap z=0, 2 cap z=1; sphere: 0).

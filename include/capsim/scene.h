@@ -90,6 +90,7 @@ struct Camera {
   double fov_deg = 40;
   int width = 512;
   int height = 512;
+  SourceLoc loc;  // where the eye is given (or the camera() statement), for later errors
 };
 
 struct Light {

@@ -31,6 +31,17 @@ struct VoxelGrid {
 
 inline constexpr int kMaxGridDivisions = 256;
 
+// The voxel index along one axis of a grid of n divisions for a position v in
+// voxel units (position - universe.lo, times n / extent): floor(v) clamped to
+// [0, n - 1]. Defined for every double: NaN gives 0 and a value beyond the
+// range of int is clamped before it is converted (the conversion itself
+// would be undefined).
+inline int clamped_voxel_index(double v, int n) {
+  if (!(v >= 0)) return 0;
+  if (v >= n) return n - 1;
+  return static_cast<int>(v);  // 0 <= v < n: truncation is floor
+}
+
 // The most (voxel, primitive) entries a grid may hold: 4 bytes each, and
 // generation holds them twice at its peak (256 MiB at the limit).
 inline constexpr std::size_t kMaxVoxelEntries = std::size_t{1} << 25;
