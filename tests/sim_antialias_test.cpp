@@ -82,7 +82,9 @@ TEST(SimAntialias, ExchangeDeliversExactlyTheCornersEachCellNeeds) {
           EXPECT_EQ(got.size(), c.corners_received.size()) << where << " cell " << c.id << ": a corner came twice";
           EXPECT_EQ(got, expected) << where << " cell " << c.id;
         }
-        if (grid.cell_count() == 1) EXPECT_TRUE(r.link_messages.empty()) << where;
+        if (grid.cell_count() == 1) {
+          EXPECT_TRUE(r.link_messages.empty()) << where;
+        }
       }
 }
 

@@ -109,7 +109,9 @@ TEST(Sequence, WithABarrierEachFrameTakesItsOwnRunLessTheProgramBroadcast) {
     const SimulationResult alone = simulate_frame(*frames.list[k], config, 2, false);
     EXPECT_EQ(run.units[k].start, start) << k;
     EXPECT_EQ(run.units[k].end - run.units[k].start, k == 0 ? alone.frame : alone.frame - program) << k;
-    if (k == 0) EXPECT_EQ(frame_spreads(run)[0].deviation_percent, load_spread(alone).deviation_percent);
+    if (k == 0) {
+      EXPECT_EQ(frame_spreads(run)[0].deviation_percent, load_spread(alone).deviation_percent);
+    }
     start = run.units[k].end;
   }
   EXPECT_EQ(run.frame, run.units.back().end);
