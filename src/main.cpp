@@ -32,6 +32,8 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "capsim 0.1.0");
   const capsim::cli::Command render = capsim::cli::add_render_command(app);
   const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app);
+  const capsim::cli::Command lattice = capsim::cli::add_lattice_command(app);
+  const capsim::cli::Command repro = capsim::cli::add_repro_command(app);
 
   try {
     app.parse(argc, argv);
@@ -41,6 +43,8 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("simulate")) return simulate();
+    if (app.got_subcommand("lattice")) return lattice();
+    if (app.got_subcommand("repro")) return repro();
   } catch (const capsim::SceneError& e) {
     fmt::print(stderr, "{}\n", e.what());  // FILE:LINE:COL: message, as compilers print
     return 1;
