@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app);
   const capsim::cli::Command lattice = capsim::cli::add_lattice_command(app);
   const capsim::cli::Command repro = capsim::cli::add_repro_command(app);
+  const capsim::cli::Command bench = capsim::cli::add_bench_command(app);
 
   try {
     app.parse(argc, argv);
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return simulate();
     if (app.got_subcommand("lattice")) return lattice();
     if (app.got_subcommand("repro")) return repro();
+    if (app.got_subcommand("bench")) return bench();
   } catch (const capsim::SceneError& e) {
     fmt::print(stderr, "{}\n", e.what());  // FILE:LINE:COL: message, as compilers print
     return 1;
