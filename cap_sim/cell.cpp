@@ -157,6 +157,7 @@ Process Cell::run() {
       record_.work += video_[f].work;
       record_.busy += video_[f].work.total();
       record_.rays += video_[f].rays;
+      record_.ops += video_[f].ops;
       record_.pixels += static_cast<std::uint64_t>(wire_.frames[f].layout.window(id_).pixel_count());
     }
 

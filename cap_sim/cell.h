@@ -30,6 +30,7 @@ struct CellRecord {
   std::vector<CornerIndex> corners_received;  // ascending
   std::uint64_t pixels = 0;  // over all frames
   std::uint64_t rays = 0;
+  OpCounts ops;        // the operations its busy time paid for, all frames
   CostBreakdown work;  // busy, by Table 4-3's processes
   std::vector<Cycles> frame_busy;   // per frame: the cycles it worked on it
   std::vector<Cycles> unit_finish;  // per distribution unit: when its "done" reached the host

@@ -120,6 +120,14 @@ Cycles category_cycles(CostCategory category, Terms terms) {
   }
 }
 
+// The voxels a ray's 3DDDA visited: the set-up's first voxel and one per step.
+std::uint64_t voxels_visited(const OpCounts& ops) {
+  std::uint64_t n = 0;
+  if (__builtin_add_overflow(ops.dda_setups, ops.dda_steps, &n))
+    throw CycleOverflow(fmt::format("{} 3DDDA set-ups + {} steps voxels visited", ops.dda_setups, ops.dda_steps));
+  return n;
+}
+
 }  // namespace
 
 Cycles CostProfile::bus_data_cycles(std::uint64_t bytes) const {
@@ -164,6 +172,7 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   p.cell.box_test = cell_us("box_test");
   p.cell.dda_setup = cell_us("dda_setup");
   p.cell.dda_step = cell_us("dda_step");
+  p.cell.voxel_visit = cell_us("voxel_visit");
   p.cell.matvec = cell_us("matvec");
   p.cell.tree_visit = cell_us("tree_visit");
   p.cell.hit_sort = cell_us("hit_sort");
@@ -269,7 +278,8 @@ CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCos
   });
   b[CostCategory::Dda] = category_cycles(CostCategory::Dda, [&] {
     return times(ops.dda_setups, "3DDDA set-ups", c.dda_setup, "cell_costs_us.dda_setup") +
-           times(ops.dda_steps, "3DDDA steps", c.dda_step, "cell_costs_us.dda_step");
+           times(ops.dda_steps, "3DDDA steps", c.dda_step, "cell_costs_us.dda_step") +
+           times(voxels_visited(ops), "voxels visited", c.voxel_visit, "cell_costs_us.voxel_visit");
   });
   b[CostCategory::Csg] = category_cycles(CostCategory::Csg, [&] {
     return times(ops.tree_visits, "status-tree visits", c.tree_visit, "cell_costs_us.tree_visit") +
@@ -291,7 +301,8 @@ WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const Ce
   WideBreakdown w;
   w.cycles[static_cast<int>(CostCategory::Intersection)] =
       t(ops.sphere_tests, c.sphere_test) + t(ops.cone_tests, c.cone_test) + t(ops.box_tests, c.box_test);
-  w.cycles[static_cast<int>(CostCategory::Dda)] = t(ops.dda_setups, c.dda_setup) + t(ops.dda_steps, c.dda_step);
+  w.cycles[static_cast<int>(CostCategory::Dda)] = t(ops.dda_setups, c.dda_setup) + t(ops.dda_steps, c.dda_step) +
+                                                  t(ops.dda_setups, c.voxel_visit) + t(ops.dda_steps, c.voxel_visit);
   w.cycles[static_cast<int>(CostCategory::Csg)] = t(ops.tree_visits, c.tree_visit) + t(ops.hits_sorted, c.hit_sort);
   w.cycles[static_cast<int>(CostCategory::Other)] = t(ops.matvec, c.matvec) + t(ops.shading_evals, c.shading_eval) +
                                                     t(ops.rays, c.ray_other) + t(ops.aa_squares, c.aa_square) +

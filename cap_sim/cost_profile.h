@@ -21,6 +21,9 @@ namespace capsim::sim {
 struct CellCosts {
   Cycles sphere_test, cone_test, box_test;  // Table 4-1; include carrying the ray into object space
   Cycles dda_setup, dda_step;               // Table 4-1: Algorithm-2
+  Cycles voxel_visit;                       // fitted: the other work in each voxel a ray visits
+                                            // (its list fetched, its primitives checked against
+                                            // the mailbox): RO per voxel of equation (2)
   Cycles matvec;                            // Table 4-1: 4x4 matrix x vector (normals)
   Cycles tree_visit;                        // one status-tree node visited (Algorithm-4)
   Cycles hit_sort;                          // one crossing put in order along the ray

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <ostream>
+
 namespace capsim::sim {
 
 namespace {
@@ -48,5 +50,7 @@ void throw_negative_duration(std::uint64_t a, std::uint64_t b) {
 }
 
 }  // namespace detail
+
+std::ostream& operator<<(std::ostream& out, Cycles c) { return out << c.count() << " cycles"; }
 
 }  // namespace capsim::sim

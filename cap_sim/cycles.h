@@ -9,6 +9,7 @@
 
 #include <compare>
 #include <cstdint>
+#include <iosfwd>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -78,5 +79,8 @@ class Cycles {
  private:
   std::uint64_t count_ = 0;
 };
+
+// "1234 cycles": how test failures and logs print a count (not its bytes).
+std::ostream& operator<<(std::ostream& out, Cycles c);
 
 }  // namespace capsim::sim

@@ -22,6 +22,7 @@ struct FrameWork {
   WindowLayout layout;
   SceneFootprint footprint;  // what "scene" and "voxel data" broadcast for it
   Cycles voxel_generation;   // the host's Algorithm-3 for it
+  VoxelGenCounts voxel_counts;  // the operations voxel_generation pays for
   std::vector<TracedCell> cells;
 };
 

@@ -1,52 +1,53 @@
 #include "lattice_scene.h"
 
+#include "capsim/parser.h"
+
 #include <fmt/core.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
+#include <stdexcept>
 
 namespace capsim::sim {
 
-Scene make_sphere_lattice(int nx, int ny, int nz, int width, int height) {
-  Scene scene;
-  SourceLoc loc;
-  loc.file = std::make_shared<const std::string>(fmt::format("lattice {}x{}x{}", nx, ny, nz));
-  scene.root.is_leaf = false;
-  scene.root.op = CsgOp::Union;
-  scene.root.loc = loc;
-  for (int z = 0; z < nz; ++z)
-    for (int y = 0; y < ny; ++y)
-      for (int x = 0; x < nx; ++x) {
-        Primitive p;
-        p.kind = PrimitiveKind::Sphere;
-        p.to_world = glm::translate(glm::dmat4(1.0), glm::dvec3(x, y, -z) * kLatticeSpacing);
-        p.loc = loc;
-        CsgNode leaf;
-        leaf.is_leaf = true;
-        leaf.primitive = static_cast<int>(scene.primitives.size());
-        leaf.loc = loc;
-        scene.root.children.push_back(leaf);
-        scene.primitives.push_back(p);
-      }
+LatticeShape lattice_shape(int spheres) {
+  if (spheres < 1 || spheres > kMaxLatticeSpheres)
+    throw std::invalid_argument(
+        fmt::format("a lattice of {} spheres: the count must be 1 to {}", spheres, kMaxLatticeSpheres));
+  int side = 1;
+  for (int a = 2; a * a * a <= spheres; ++a)
+    if (spheres % (a * a) == 0) side = a;
+  return {side, side, spheres / (side * side)};
+}
 
-  // The near face spans [-1, (n - 1) * spacing + 1] in x and y, at z = +1.
-  const double span_x = (nx - 1) * kLatticeSpacing + 2;
-  const double span_y = (ny - 1) * kLatticeSpacing + 2;
+std::string lattice_scene_text(const LatticeShape& shape, int width, int height) {
+  // The camera frames the near face of the reference lattice: its span across
+  // the shorter screen side, from sphere edge to sphere edge, at 40 degrees.
+  const double fov = 40;
+  const double span = (kLatticeViewSide - 1) * kLatticeSpacing + 2 * kLatticeRadius;
   const double aspect = static_cast<double>(width) / height;
-  const double half_height = 0.5 * std::max(span_y, span_x / aspect);  // the face fits, and fills one axis
-  Camera cam;
-  cam.fov_deg = 40;
-  const double distance = half_height / std::tan(glm::radians(cam.fov_deg / 2));
-  const glm::dvec3 centre(0.5 * (nx - 1) * kLatticeSpacing, 0.5 * (ny - 1) * kLatticeSpacing, 1.0);
-  cam.eye = centre + glm::dvec3(0, 0, distance);
-  cam.center = centre;
-  cam.up = {0, 1, 0};
-  cam.width = width;
-  cam.height = height;
-  scene.camera = cam;
-  return scene;
+  const double half_height = 0.5 * std::max(span, span / aspect);
+  const double distance = half_height / std::tan(fov / 2 * std::acos(-1.0) / 180);
+  std::string text = fmt::format(
+      "// Table 4-2 test model: {} spheres, {} x {} in the near face, {} deep (capsim lattice {}).\n"
+      "// Radius {}, centres {} apart; the camera frames a {} x {} near face.\n"
+      "camera(eye = [0, 0, {}], center = [0, 0, {}], up = [0, 1, 0], fov = {}, size = [{}, {}]);\n"
+      "union() {{\n",
+      shape.count(), shape.nx, shape.ny, shape.nz, shape.count(), kLatticeRadius, kLatticeSpacing,
+      kLatticeViewSide, kLatticeViewSide, kLatticeRadius + distance, kLatticeRadius, fov, width, height);
+  for (int z = 0; z < shape.nz; ++z)
+    for (int y = 0; y < shape.ny; ++y)
+      for (int x = 0; x < shape.nx; ++x)
+        text += fmt::format("  translate([{}, {}, {}]) sphere(r = {});\n",
+                            (x - 0.5 * (shape.nx - 1)) * kLatticeSpacing,
+                            (y - 0.5 * (shape.ny - 1)) * kLatticeSpacing, 0.0 - z * kLatticeSpacing, kLatticeRadius);
+  text += "}\n";
+  return text;
+}
+
+Scene make_sphere_lattice(const LatticeShape& shape, int width, int height) {
+  return parse_scene(lattice_scene_text(shape, width, height),
+                     fmt::format("lattice {}x{}x{}", shape.nx, shape.ny, shape.nz));
 }
 
 }  // namespace capsim::sim

@@ -138,7 +138,7 @@ FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std
   } catch (const CycleOverflow& e) {
     throw e.inside("the host's voxel generation");
   }
-  return FrameWork{layout, scene_footprint(scene), voxel_generation, std::move(traced)};
+  return FrameWork{layout, scene_footprint(scene), voxel_generation, scene.voxel_counts, std::move(traced)};
 }
 
 std::uint64_t simulation_memory(const MachineConfig& config, int width, int height, int frames) {
@@ -193,7 +193,10 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
 
   CostBreakdown voxel_generation;
   try {
-    for (const FrameWork& f : frames) voxel_generation[CostCategory::VoxelGeneration] += f.voxel_generation;
+    for (const FrameWork& f : frames) {
+      voxel_generation[CostCategory::VoxelGeneration] += f.voxel_generation;
+      result.voxel_counts += f.voxel_counts;
+    }
   } catch (const CycleOverflow& e) {
     throw e.inside("the host's voxel generation, all frames");
   }
@@ -233,9 +236,13 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   if (!kernel.all_processes_finished())
     throw std::logic_error("the simulated run deadlocked: a process waits for a message that never came");
 
-  for (const BusTransfer& t : bus.log())
+  for (const BusTransfer& t : bus.log()) {
     timeline.span(bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, grid)),
                   t.receiver == kAllCells ? "broadcast" : "message", t.granted, t.released, t.bytes);
+    ++result.bus.transfers;
+    result.bus.bytes += t.bytes;
+    result.bus.busy += t.released - t.granted;
+  }
   // One track per link direction that carried anything, after the cells'.
   std::vector<int> link_tracks(static_cast<std::size_t>(grid.cell_count()) * 4, -1);
   for (const LinkTraffic& t : links.traffic()) {
@@ -262,6 +269,7 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
     c.position = grid.position(c.id);
     c.pixels = r.pixels;
     c.rays = r.rays;
+    c.ops = r.ops;
     c.busy = r.busy;
     c.comm = r.comm;
     c.finish = r.finish;

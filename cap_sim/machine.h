@@ -43,6 +43,7 @@ struct CellReport {
   CellPosition position;
   std::uint64_t pixels = 0;  // over all frames
   std::uint64_t rays = 0;
+  OpCounts ops;                     // the operations its busy time paid for, all frames
   Cycles busy, idle, comm, finish;  // idle = finish - busy - comm
   CostBreakdown work;
   // Antialiasing: each phase from its start to its end (the exchange includes
@@ -84,16 +85,24 @@ struct UnitTimes {
 
 inline constexpr std::uint64_t kVideoPixelBytes = 3;  // 8-bit R, G, B
 
+// The command bus over a run: every transfer (broadcasts and messages).
+struct BusTotals {
+  std::uint64_t transfers = 0, bytes = 0;
+  Cycles busy;  // the cycles the bus was held, grant to release, summed
+};
+
 struct SimulationResult {
   MachineConfig config;
   SceneFootprint footprint;  // the first frame's
   std::vector<CellReport> cells;
   CostBreakdown breakdown;  // every cell's work plus the host's voxel generation
+  VoxelGenCounts voxel_counts;  // the host's Algorithm-3 operations, all frames
   Cycles frame;             // the last completion reached the host: the run's time
                             // (for one frame, the frame time)
   int width = 0, height = 0;
   std::vector<FrameScreen> screens;  // one per frame
   std::vector<UnitTimes> units;
+  BusTotals bus;
   std::vector<LinkTraffic> links;          // every link that carried a message
   std::vector<LinkMessage> link_messages;  // in order of arrival
   Timeline timeline;

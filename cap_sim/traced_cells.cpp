@@ -61,7 +61,7 @@ std::optional<CellOverflow> fold(const tbb::enumerable_thread_specific<Sums>& su
     if (!fits) return CellOverflow{c, items[c], wide.total()};
     work[c] = *fits;
   }
-  for (CellId c = 0; c < cell_count; ++c) add(c, work[c], ops[c].rays);
+  for (CellId c = 0; c < cell_count; ++c) add(c, work[c], ops[c]);
   return std::nullopt;
 }
 
@@ -189,15 +189,17 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
       }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * width);
   });
-  if (const auto overflow = fold(corner_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+  if (const auto overflow = fold(corner_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, const OpCounts& ops) {
         cells[c].corner_work = work;
-        cells[c].rays += rays;
+        cells[c].rays += ops.rays;
+        cells[c].ops += ops;
       }))
     throw CycleOverflow(fmt::format("{}'s work for its {} corner samples adds up to {} cycles",
                                     cell_name(layout, overflow->cell), overflow->items, overflow->total));
-  if (const auto overflow = fold(pixel_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+  if (const auto overflow = fold(pixel_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, const OpCounts& ops) {
         cells[c].subdivision_work = work;
-        cells[c].rays += rays;
+        cells[c].rays += ops.rays;
+        cells[c].ops += ops;
       }))
     throw CycleOverflow(fmt::format("{}'s subdivision of its {} pixels adds up to {} cycles",
                                     cell_name(layout, overflow->cell), overflow->items, overflow->total));
@@ -251,9 +253,10 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
       }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
   });
-  if (const auto overflow = fold(sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, std::uint64_t rays) {
+  if (const auto overflow = fold(sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, const OpCounts& ops) {
         cells[c].work = work;
-        cells[c].rays = rays;
+        cells[c].rays = ops.rays;
+        cells[c].ops = ops;
       }))
     refuse_overflow(tracer, layout, costs, *overflow, "pixels");
   return cells;

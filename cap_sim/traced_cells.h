@@ -34,6 +34,7 @@ struct TracedCell {
   std::vector<std::uint64_t> pixel_cycles;  // (Float)
   CostBreakdown work;  // pixel_cost() summed over the cell's pixels
   std::uint64_t rays = 0;
+  OpCounts ops;  // the operations work charges for (rays = ops.rays)
   // Antialiasing only.
   CostBreakdown corner_work;               // phase 1: tracing the corners it owns
   CostBreakdown subdivision_work;          // phase 3: its pixels' subdivision

@@ -3,6 +3,7 @@
 #include "capsim/prepared_scene.h"
 #include "capsim/voxel_grid.h"
 #include "cell_grid.h"
+#include "lattice_scene.h"
 #include "cli_options.h"
 
 #include <fmt/format.h>
@@ -31,6 +32,10 @@ std::string accepted_values(const std::string& option) {
   if (option == "--primary-only" || option == "--frame-average") return "no value, or true or false";
   if (option == "--aa") return fmt::format("0 to {}; 0 = one sample at each pixel centre", kMaxAntialiasDepth);
   if (option == "--aa-threshold") return "a number from 0 to 3";
+  if (option == "spheres") return fmt::format("a whole number from 1 to {}", sim::kMaxLatticeSpheres);
+  if (option == "--disb-frames") return "0 to 64; 0 = leave Table 4-5 not run";
+  if (option == "--scenes") return "a directory holding the shipped models (balls.csg, chess.csg, ..., disb/)";
+  if (option == "--plot") return "a path ending in .svg";
   return "";
 }
 
@@ -54,8 +59,12 @@ void refuse(const std::string& option, const std::string& value, const std::stri
 }
 
 std::string command_name(const CLI::App& app) {
-  const std::vector<CLI::App*> parsed = app.get_subcommands();
-  return parsed.empty() ? "capsim" : "capsim " + parsed.front()->get_name();
+  std::string name = "capsim";
+  for (const CLI::App* cmd = &app; !cmd->get_subcommands().empty();) {
+    cmd = cmd->get_subcommands().front();
+    name += " " + cmd->get_name();
+  }
+  return name;
 }
 
 namespace {
@@ -125,9 +134,19 @@ std::string describe_extras(const CLI::App& app) {
     return fmt::format("unknown command {}{} (accepted: {})", shown(first), suggestion(first, commands),
                        all_commands);
   }
-  const CLI::App& cmd = *parsed.front();
+  const CLI::App* innermost = parsed.front();
+  std::string path = innermost->get_name();  // "bench modes", as typed after capsim
+  while (!innermost->get_subcommands().empty()) {
+    innermost = innermost->get_subcommands().front();
+    path += " " + innermost->get_name();
+  }
+  const CLI::App& cmd = *innermost;
   std::vector<std::string> extra = cmd.remaining();
   for (const std::string& e : app.remaining()) extra.push_back(e);  // given before the command
+  const std::vector<std::string> inner_commands = subcommand_names(cmd);
+  if (!inner_commands.empty() && !extra.empty() && extra.front().rfind("-", 0) != 0)
+    return fmt::format("unknown command {}{} (accepted: {})", shown(extra.front()),
+                       suggestion(extra.front(), inner_commands), fmt::format("{}", fmt::join(inner_commands, ", ")));
   const auto option =
       std::find_if(extra.begin(), extra.end(), [](const std::string& e) { return e.rfind("-", 0) == 0; });
   const std::vector<std::string> known = option_names(cmd);
@@ -135,9 +154,12 @@ std::string describe_extras(const CLI::App& app) {
     return fmt::format("{} is an option of {}: give it after the command's name", *option, cmd.get_name());
   if (option != extra.end())
     return fmt::format("unknown option {}{} (capsim {} --help lists every option)", shown(*option),
-                       suggestion(*option, known), cmd.get_name());
-  return fmt::format("unexpected argument {}: {} takes SCENE files and options", shown(extra.empty() ? "" : extra.front()),
-                     cmd.get_name());
+                       suggestion(*option, known), path);
+  if (cmd.get_name() == "render" || cmd.get_name() == "simulate")
+    return fmt::format("unexpected argument {}: {} takes SCENE files and options",
+                       shown(extra.empty() ? "" : extra.front()), cmd.get_name());
+  return fmt::format("unexpected argument {} (capsim {} --help lists what it takes)",
+                     shown(extra.empty() ? "" : extra.front()), path);
 }
 
 }  // namespace

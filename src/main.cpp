@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "capsim 0.1.0");
   const capsim::cli::Command render = capsim::cli::add_render_command(app);
   const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app);
+  const capsim::cli::Command lattice = capsim::cli::add_lattice_command(app);
+  const capsim::cli::Command repro = capsim::cli::add_repro_command(app);
+  const capsim::cli::Command bench = capsim::cli::add_bench_command(app);
 
   using capsim::cli::UsageError;
   try {
@@ -47,7 +50,10 @@ int main(int argc, char** argv) {
     }
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("simulate")) return simulate();
-    throw UsageError("a command is required (accepted: render, simulate; capsim --help describes them)");
+    if (app.got_subcommand("lattice")) return lattice();
+    if (app.got_subcommand("repro")) return repro();
+    if (app.got_subcommand("bench")) return bench();
+    throw UsageError("a command is required (accepted: render, simulate, lattice, repro, bench; capsim --help describes them)");
   } catch (const UsageError& e) {
     fmt::print(stderr, "{}: {}\n", capsim::cli::command_name(app), e.what());
     return 2;

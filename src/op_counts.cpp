@@ -20,4 +20,13 @@ OpCounts& OpCounts::operator+=(const OpCounts& o) {
   return *this;
 }
 
+VoxelGenCounts& VoxelGenCounts::operator+=(const VoxelGenCounts& o) {
+  primitives += o.primitives;
+  matmat += o.matmat;
+  matvec += o.matvec;
+  columns += o.columns;
+  voxel_entries += o.voxel_entries;
+  return *this;
+}
+
 }  // namespace capsim

@@ -9,9 +9,11 @@ using namespace capsim::testing;
 namespace {
 
 const std::string kBalls = scene_path("balls.csg");
+const std::string kScenes = std::filesystem::path(kBalls).parent_path().string();
 
 struct UsageCase {
-  // OUT stands for a path in the test's directory and BALLS for scenes/balls.csg.
+  // OUT stands for a path in the test's directory, BALLS for scenes/balls.csg
+  // and SCENES for the scenes/ directory.
   std::string args;     // after "capsim"
   std::string message;  // the whole line printed, without its newline
 };
@@ -28,7 +30,7 @@ class CliUsageError : public ::testing::TestWithParam<UsageCase> {};
 TEST_P(CliUsageError, ExitsTwoWithOneLineNamingTheOptionAndItsRange) {
   TempDir dir;
   const auto in_test = [&](const std::string& text) {
-    return replace_all(replace_all(text, "OUT", dir / "out"), "BALLS", kBalls);
+    return replace_all(replace_all(replace_all(text, "OUT", dir / "out"), "BALLS", kBalls), "SCENES", kScenes);
   };
   const RunResult r = run_capsim(in_test(GetParam().args), dir);
   EXPECT_EQ(r.status, 2) << r.err;
@@ -53,16 +55,16 @@ std::string case_name(const ::testing::TestParamInfo<UsageCase>& info) {
 INSTANTIATE_TEST_SUITE_P(
     Commands, CliUsageError,
     ::testing::Values(
-        UsageCase{"", "capsim: a command is required (accepted: render, simulate; capsim --help describes them)"},
+        UsageCase{"", "capsim: a command is required (accepted: render, simulate, lattice, repro, bench; capsim --help describes them)"},
         UsageCase{"rendr BALLS -o OUT.png",
-                  "capsim: unknown command rendr; did you mean render? (accepted: render, simulate)"},
+                  "capsim: unknown command rendr; did you mean render? (accepted: render, simulate, lattice, repro, bench)"},
         UsageCase{"sim BALLS -o OUT.png",
-                  "capsim: unknown command sim; did you mean simulate? (accepted: render, simulate)"},
-        UsageCase{"draw BALLS", "capsim: unknown command draw (accepted: render, simulate)"},
+                  "capsim: unknown command sim; did you mean simulate? (accepted: render, simulate, lattice, repro, bench)"},
+        UsageCase{"draw BALLS", "capsim: unknown command draw (accepted: render, simulate, lattice, repro, bench)"},
         UsageCase{"--threads 2 render BALLS -o OUT.png",
                   "capsim render: --threads is an option of render: give it after the command's name"},
         UsageCase{"--fast", "capsim: unknown option --fast (capsim itself takes only --help and --version; give "
-                            "options after the command: render, simulate)"}),
+                            "options after the command: render, simulate, lattice, repro, bench)"}),
     case_name);
 
 INSTANTIATE_TEST_SUITE_P(
@@ -132,6 +134,41 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"simulate BALLS -o OUT.png --cell 2x2",
                   "capsim simulate: unknown option --cell; did you mean --cells? (capsim simulate --help lists "
                   "every option)"}),
+    case_name);
+
+// The paper's tools: `lattice`, `repro` and `bench modes` check their options
+// and outputs the same way, before any run.
+INSTANTIATE_TEST_SUITE_P(
+    Tools, CliUsageError,
+    ::testing::Values(
+        UsageCase{"lattice 0 -o OUT.csg",
+                  "capsim lattice: spheres 0 is out of range (accepted: a whole number from 1 to 1000000)"},
+        UsageCase{"lattice 16 -o OUT.csg --size 0x9", with("capsim lattice: --size 0x9 is out of range", kSizeRange)},
+        UsageCase{"lattice 16 -o OUT/none/x.csg",
+                  "capsim lattice: --output OUT/none/x.csg: directory OUT/none does not exist"},
+        UsageCase{"lattice 16 -o OUT.csg extra",
+                  "capsim lattice: unexpected argument extra (capsim lattice --help lists what it takes)"},
+        UsageCase{"repro --scenes SCENES --disb-frames 65",
+                  "capsim repro: --disb-frames 65 is out of range (accepted: 0 to 64; 0 = leave Table 4-5 not run)"},
+        UsageCase{"repro --scenes SCENES --threads 2000",
+                  with("capsim repro: --threads 2000 is out of range", kThreadsRange)},
+        UsageCase{"repro --scenes OUT", "capsim repro: --scenes OUT is not a directory (accepted: a directory holding "
+                                        "the shipped models (balls.csg, chess.csg, ..., disb/))"},
+        UsageCase{"repro --scenes SCENES -o OUT/none/r.md",
+                  "capsim repro: --output OUT/none/r.md: directory OUT/none does not exist"},
+        UsageCase{"bench", "capsim bench: a benchmark is required (accepted: modes)"},
+        UsageCase{"bench mods", "capsim bench: unknown command mods; did you mean modes? (accepted: modes)"},
+        UsageCase{"bench modes --bogus",
+                  "capsim bench modes: unknown option --bogus (capsim bench modes --help lists every option)"},
+        UsageCase{"bench modes --scenes SCENES --size 3", with("capsim bench modes: --size 3 is not WxH", kSizeRange)},
+        UsageCase{"bench modes --scenes SCENES --threads -1",
+                  with("capsim bench modes: --threads -1 is out of range", kThreadsRange)},
+        UsageCase{"bench modes --scenes SCENES --plot OUT.png",
+                  "capsim bench modes: --plot OUT.png does not end in .svg (accepted: a path ending in .svg)"},
+        UsageCase{"bench modes --scenes SCENES --baseline OUT.json",
+                  "capsim bench modes: --baseline OUT.json: no such file (write one with --update)"},
+        UsageCase{"bench modes --scenes SCENES --update --json OUT/none/a.json",
+                  "capsim bench modes: --json OUT/none/a.json: directory OUT/none does not exist"}),
     case_name);
 
 }  // namespace

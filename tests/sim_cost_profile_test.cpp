@@ -30,6 +30,8 @@ TEST(CostProfile, CapHoldsTable41AtEightMegahertz) {
   EXPECT_EQ(p.cell.dda_setup, Cycles(4237 * 8));
   EXPECT_EQ(p.cell.dda_step, Cycles(160 * 8));
   EXPECT_EQ(p.cell.matvec, Cycles(597 * 8));
+  EXPECT_EQ(p.cell.ray_other, Cycles(14776 * 8));  // the M380's fitted 90.1 us x 164
+  EXPECT_EQ(p.cell.voxel_visit, Cycles(1345 * 8));  // the M380's fitted 8.2 us x 164
   EXPECT_EQ(p.host.matmat, Cycles(3134 * 8));
   EXPECT_EQ(p.bus.bytes_per_second, 2'000'000u);
   EXPECT_EQ(p.link.bits_per_second, 15'000'000u);
@@ -45,14 +47,15 @@ TEST(CostProfile, M380HoldsTable41AtFiftyMegahertz) {
   EXPECT_EQ(p.cell.dda_step, Cycles(70));       // 1.4 us
   EXPECT_EQ(p.cell.matvec, Cycles(180));        // 3.6 us
   EXPECT_EQ(p.host.matmat, Cycles(925));        // 18.5 us
-  EXPECT_EQ(p.cell.ray_other, Cycles(2520));    // 50.4 us, fitted
+  EXPECT_EQ(p.cell.ray_other, Cycles(4505));    // 90.1 us, fitted to Table 4-2
+  EXPECT_EQ(p.cell.voxel_visit, Cycles(410));   // 8.2 us, fitted to Table 4-2
 }
 
 std::string minimal_profile_text() {
   return nlohmann::json::parse(R"({
     "name": "t", "description": "d", "clock_hz": 1000000,
     "cell_costs_us": {"sphere_test": 1, "cone_test": 2, "box_test": 3, "dda_setup": 4,
-                      "dda_step": 5, "matvec": 6, "tree_visit": 7, "hit_sort": 8,
+                      "dda_step": 5, "voxel_visit": 13, "matvec": 6, "tree_visit": 7, "hit_sort": 8,
                       "shading_eval": 9, "ray_other": 10, "pixel_write": 11,
                       "aa_square": 12},
     "host_costs_us": {"primitive": 1, "matmat": 2, "matvec": 3, "voxel_column": 4, "voxel_entry": 5},
@@ -87,6 +90,9 @@ TEST(CostProfile, RefusesUnknownMissingAndBadValues) {
   nlohmann::json missing = j;
   missing["bus"].erase("latency_us");
   expect_refused(missing.dump(), "latency_us");
+  nlohmann::json no_voxel_visit = j;  // a profile written before the per-voxel work was a key
+  no_voxel_visit["cell_costs_us"].erase("voxel_visit");
+  expect_refused(no_voxel_visit.dump(), "cell_costs_us missing key \"voxel_visit\"");
   nlohmann::json negative = j;
   negative["cell_costs_us"]["dda_step"] = -1;
   expect_refused(negative.dump(), "cell_costs_us.dda_step");
@@ -184,11 +190,11 @@ TEST(CostProfile, PixelCostIsEachCountTimesItsCost) {
   ops.aa_squares = 3;
   const CostBreakdown b = pixel_cost(ops, p.cell);
   EXPECT_EQ(b[CostCategory::Intersection], Cycles(3 * 1 + 2 * 2 + 1 * 3));
-  EXPECT_EQ(b[CostCategory::Dda], Cycles(1 * 4 + 7 * 5));
+  EXPECT_EQ(b[CostCategory::Dda], Cycles(1 * 4 + 7 * 5 + (1 + 7) * 13));  // every voxel visited
   EXPECT_EQ(b[CostCategory::Csg], Cycles(4 * 7 + 5 * 8));
   EXPECT_EQ(b[CostCategory::Other], Cycles(1 * 6 + 2 * 9 + 2 * 10 + 3 * 12 + 11));
   EXPECT_EQ(b[CostCategory::VoxelGeneration], Cycles(0));
-  EXPECT_EQ(b.total(), Cycles(10 + 39 + 68 + 91));
+  EXPECT_EQ(b.total(), Cycles(10 + 143 + 68 + 91));
 }
 
 TEST(CostProfile, VoxelGenerationCostIsEachCountTimesItsHostCost) {
@@ -205,7 +211,7 @@ TEST(CostProfile, VoxelGenerationCostIsEachCountTimesItsHostCost) {
 }
 
 TEST(CostProfile, APixelCostBeyondTheCounterNamesTheCategoryAndTheField) {
-  const CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
+  CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
   OpCounts ops;
   ops.box_tests = std::uint64_t{1} << 63;  // x 3 cycles
   try {
@@ -215,7 +221,8 @@ TEST(CostProfile, APixelCostBeyondTheCounterNamesTheCategoryAndTheField) {
     EXPECT_EQ(e.quantity(),
               "intersection work: 9223372036854775808 box tests x cell_costs_us.box_test (3 cycles)");
   }
-  // Each product fits; their sum does not.
+  // Each product fits; their sum does not (no per-voxel work, whose product would not fit).
+  p.cell.voxel_visit = Cycles(0);
   OpCounts sum;
   sum.dda_setups = std::uint64_t{1} << 61;  // x 4 cycles = 2^63
   sum.dda_steps = std::uint64_t{1} << 61;   // x 5 cycles
@@ -224,6 +231,18 @@ TEST(CostProfile, APixelCostBeyondTheCounterNamesTheCategoryAndTheField) {
     FAIL() << "no overflow";
   } catch (const CycleOverflow& e) {
     EXPECT_EQ(e.quantity(), "3DDDA (incl. set-up) work: 9223372036854775808 + 11529215046068469760 cycles");
+  }
+  // The voxels visited are the set-ups plus the steps, each charged voxel_visit.
+  p.cell.voxel_visit = Cycles(13);
+  OpCounts voxels;
+  voxels.dda_setups = std::uint64_t{1} << 60;
+  voxels.dda_steps = std::uint64_t{1} << 60;
+  try {
+    pixel_cost(voxels, p.cell);
+    FAIL() << "no overflow";
+  } catch (const CycleOverflow& e) {
+    EXPECT_EQ(e.quantity(),
+              "3DDDA (incl. set-up) work: 2305843009213693952 voxels visited x cell_costs_us.voxel_visit (13 cycles)");
   }
 }
 

@@ -163,7 +163,8 @@ TEST(Machine, MemoryNeedsBeyond64BitsDoNotWrapIntoAFit) {
 unsigned __int128 wide_pixel_cycles(const OpCounts& o, const CellCosts& c) {
   auto t = [](std::uint64_t n, Cycles cost) { return static_cast<unsigned __int128>(n) * cost.count(); };
   return t(o.sphere_tests, c.sphere_test) + t(o.cone_tests, c.cone_test) + t(o.box_tests, c.box_test) +
-         t(o.dda_setups, c.dda_setup) + t(o.dda_steps, c.dda_step) + t(o.tree_visits, c.tree_visit) +
+         t(o.dda_setups, c.dda_setup) + t(o.dda_steps, c.dda_step) + t(o.dda_setups, c.voxel_visit) +
+         t(o.dda_steps, c.voxel_visit) + t(o.tree_visits, c.tree_visit) +
          t(o.hits_sorted, c.hit_sort) + t(o.matvec, c.matvec) + t(o.shading_evals, c.shading_eval) +
          t(o.rays, c.ray_other) + c.pixel_write.count();
 }

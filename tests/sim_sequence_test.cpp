@@ -215,9 +215,9 @@ TEST(Sequence, DisbHasTheShapeOfTable45) {
   EXPECT_LT(max_deviation_percent(averaged), 10.0);
   EXPECT_LT(averaged.frame.seconds(1), 0.9 * aa.frame.seconds(1));
   // The figures, exactly (simulated cycles are deterministic).
-  EXPECT_EQ(plain.frame, Cycles(16'469'806'632));
-  EXPECT_EQ(aa.frame, Cycles(74'271'939'522));
-  EXPECT_EQ(averaged.frame, Cycles(61'875'631'032));
+  EXPECT_EQ(plain.frame, Cycles(25'675'528'048));
+  EXPECT_EQ(aa.frame, Cycles(97'960'732'667));
+  EXPECT_EQ(averaged.frame, Cycles(82'595'879'072));
 }
 
 }  // namespace

@@ -39,6 +39,9 @@ struct VoxelGenCounts {
   std::uint64_t matvec = 0;         // 4x4 matrix x vector products (box corners)
   std::uint64_t columns = 0;        // X-Y voxel columns examined
   std::uint64_t voxel_entries = 0;  // (voxel, primitive) entries written
+
+  VoxelGenCounts& operator+=(const VoxelGenCounts& o);
+  bool operator==(const VoxelGenCounts&) const = default;
 };
 
 }  // namespace capsim

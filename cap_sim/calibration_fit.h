@@ -1,0 +1,60 @@
+#pragma once
+// The fit of the cost constants the paper does not give, by least squares of
+// the relative error over measured cells (docs/calibration.md). Time is linear
+// in every cost, so a cell's time for other values of the fitted costs follows
+// from its simulated time and its operation counts:
+//   t(x) = t_simulated + sum over fitted costs k of (x_k - profile_k) x count_k.
+
+#include "cost_profile.h"
+
+#include "capsim/op_counts.h"
+
+#include <string>
+#include <vector>
+
+namespace capsim::sim {
+
+// The costs a fit may determine.
+enum class FittedCost {
+  RayOther,       // cell_costs_us.ray_other, per ray
+  VoxelVisit,     // cell_costs_us.voxel_visit, per voxel visited
+  TreeVisit,      // cell_costs_us.tree_visit, per status-tree node visited
+  HitSort,        // cell_costs_us.hit_sort, per crossing sorted
+  HostPrimitive,  // host_costs_us.primitive
+  HostColumn,     // host_costs_us.voxel_column
+  HostEntry,      // host_costs_us.voxel_entry
+};
+inline constexpr int kFittedCosts = 7;
+std::vector<FittedCost> all_fitted_costs();
+const char* profile_key(FittedCost c);  // "cell_costs_us.ray_other", ...
+
+// One measured cell: the published time and a simulation of it on one cell
+// (its operations are what that cell and the host did).
+struct FitCell {
+  double paper_seconds = 0;
+  double simulated_seconds = 0;
+  OpCounts ops;           // summed over the cells
+  VoxelGenCounts voxels;  // the host's
+};
+
+// How many operations cost c is charged for in a cell.
+double charged_count(FittedCost c, const FitCell& cell);
+// The profile's value of cost c, in microseconds (its cycles / clock).
+double profile_value_us(FittedCost c, const CostProfile& profile);
+
+struct FitResult {
+  std::vector<FittedCost> fitted;
+  std::vector<double> value_us;           // per fitted cost, >= 0
+  std::vector<double> predicted_seconds;  // per cell, with the fitted values
+  double rms_relative_error = 0;          // sqrt(mean of (predicted / paper - 1)^2)
+};
+
+// Non-negative least squares of (t / paper - 1) over the cells, the costs in
+// `fitted` free and every other cost at the profile's value.
+FitResult fit_costs(const std::vector<FitCell>& cells, const CostProfile& profile,
+                    const std::vector<FittedCost>& fitted);
+
+// The same quantities for the profile as it is (nothing fitted).
+FitResult evaluate_costs(const std::vector<FitCell>& cells);
+
+}  // namespace capsim::sim

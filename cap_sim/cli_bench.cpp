@@ -1,0 +1,134 @@
+// `capsim bench modes`: the regression benchmarks of the pixel modes, compared
+// exactly with a stored baseline (docs/benchmarks.md).
+
+#include "capsim/prepared_scene.h"
+#include "cli_commands.h"
+#include "cli_options.h"
+#include "cli_outputs.h"
+#include "cli_usage.h"
+#include "modes_bench.h"
+#include "text_output.h"
+
+#include <fmt/core.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <vector>
+
+namespace capsim::cli {
+
+namespace {
+
+struct BenchOptions {
+  std::string size = "512x512";
+  std::string scenes = "scenes";
+  std::string baseline;  // default: bench/baselines/modes[-WxH].json
+  std::string json;
+  std::string plot;
+  bool update = false;
+  std::string threads = "0";
+};
+
+nlohmann::json read_json(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(fmt::format("{}: cannot read the baseline (write one with --update)", path));
+  std::ostringstream text;
+  text << in.rdbuf();
+  try {
+    return nlohmann::json::parse(text.str());
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(fmt::format("{}: not a baseline: {}", path, e.what()));
+  }
+}
+
+int run_modes(const BenchOptions& o) {
+  sim::ModesBenchOptions options;
+  std::tie(options.width, options.height) = parse_pair_option("--size", o.size, "WxH", kMaxImageSide);
+  options.threads = parse_whole_option("--threads", o.threads, 0, kMaxThreadsOption);
+  if (!std::filesystem::is_directory(o.scenes)) refuse("--scenes", o.scenes, "is not a directory");
+  options.scenes_dir = o.scenes;
+  const std::string baseline =
+      !o.baseline.empty() ? o.baseline
+      : (options.width == 512 && options.height == 512)
+          ? std::string("bench/baselines/modes.json")
+          : fmt::format("bench/baselines/modes-{}x{}.json", options.width, options.height);
+  if (!o.plot.empty() && !o.plot.ends_with(".svg")) refuse("--plot", o.plot, "does not end in .svg");
+  const bool have_baseline = std::filesystem::exists(baseline);
+  if (!o.update && !have_baseline)
+    throw UsageError(fmt::format("--baseline {}: no such file (write one with --update)", shown(baseline)));
+  const nlohmann::json old = have_baseline ? read_json(baseline) : nlohmann::json();
+  // The baseline is read above and replaced, when --update asks, only once
+  // the whole run is done.
+  StagedOutputs outputs({{"--json", o.json}, {"--plot", o.plot}, {"--baseline", o.update ? baseline : std::string()}},
+                        have_baseline && !o.update ? std::vector<std::string>{baseline} : std::vector<std::string>{});
+
+  options.log = [](const std::string& run) { fmt::print(stderr, "{}\n", run); };
+  const sim::ModesBench bench = sim::run_modes_bench(options);
+  const nlohmann::json now = sim::modes_bench_json(bench);
+  fmt::print("{}\n", sim::modes_bench_table(bench));
+  if (!o.json.empty()) sim::write_text_file(outputs["--json"], now.dump(2) + "\n");
+  if (!o.plot.empty()) sim::write_text_file(outputs["--plot"], sim::modes_bench_svg(bench));
+  if (o.update) sim::write_text_file(outputs["--baseline"], now.dump(2) + "\n");
+  outputs.commit();
+
+  if (o.update) {
+    if (!have_baseline) {
+      fmt::print("{}: written ({} runs)\n", baseline, bench.runs.size());
+      return 0;
+    }
+    std::vector<sim::MovedFigure> moved;
+    try {
+      moved = sim::compare_modes_bench(old, now);
+    } catch (const std::runtime_error& e) {
+      fmt::print("{}: rewritten; the old one was not comparable: {}\n", baseline, e.what());
+      return 0;
+    }
+    if (moved.empty()) {
+      fmt::print("{}: rewritten; nothing moved\n", baseline);
+    } else {
+      fmt::print("{}: rewritten; {} figures moved:\n\n{}", baseline, moved.size(), sim::format_moved(moved));
+    }
+    return 0;
+  }
+  const std::vector<sim::MovedFigure> moved = sim::compare_modes_bench(old, now);
+  if (moved.empty()) {
+    fmt::print("{}: all {} runs identical to the baseline\n", baseline, bench.runs.size());
+    return 0;
+  }
+  fmt::print("{}: {} figures differ from the baseline:\n\n{}\nIf the change is intended, rerun with --update "
+             "and commit the baseline with it, saying why.\n",
+             baseline, moved.size(), sim::format_moved(moved));
+  return 1;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* bench = app.add_subcommand("bench", "Regression benchmarks of the simulated machine");
+  CLI::App* modes = bench->add_subcommand(
+      "modes",
+      "Every shipped model in block, line and dot mode on 4x4, 4x8, 8x8 and 16x16 cells, plain and "
+      "antialiased (--aa 2): frame time, Max, Min, d, speed-up against 4x4, bus and link traffic; compared "
+      "exactly with a stored baseline (docs/benchmarks.md)");
+  modes->add_option("--size", o->size, "Screen of every run, WxH")->default_val("512x512");
+  modes->add_option("--scenes", o->scenes, "Directory of the models")->default_val("scenes");
+  modes->add_option("--baseline", o->baseline,
+                    "Baseline to compare with (default: bench/baselines/modes.json at 512x512, "
+                    "bench/baselines/modes-WxH.json at other sizes)");
+  modes->add_flag("--update", o->update, "Rewrite the baseline with this run and print what moved");
+  modes->add_option("--json", o->json, "Also write the results as JSON to this file");
+  modes->add_option("--plot", o->plot, "Also write a plot (.svg): d and speed-up against the cell count");
+  modes->add_option("--threads", o->threads, "Host threads (0 = all); the figures do not depend on it")
+      ->default_val("0");
+  return [o, modes] {
+    if (modes->parsed()) return run_modes(*o);
+    throw UsageError("a benchmark is required (accepted: modes)");
+  };
+}
+
+}  // namespace capsim::cli

@@ -1,0 +1,51 @@
+// `capsim lattice`: writes a sphere lattice of the paper's Table 4-2 as a scene file.
+
+#include "capsim/prepared_scene.h"
+#include "cli_commands.h"
+#include "cli_options.h"
+#include "cli_outputs.h"
+#include "lattice_scene.h"
+#include "text_output.h"
+
+#include <fmt/core.h>
+
+#include <memory>
+
+namespace capsim::cli {
+
+namespace {
+
+struct LatticeOptions {
+  std::string spheres;
+  std::string output;
+  std::string size = "512x512";
+};
+
+}  // namespace
+
+Command add_lattice_command(CLI::App& app) {
+  auto o = std::make_shared<LatticeOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "lattice",
+      "Write a lattice of equal spheres, the test model of the paper's Table 4-2 (16, 512, 1000, 4096 and "
+      "6859 spheres), as a scene file (docs/calibration.md gives the geometry)");
+  cmd->add_option("spheres", o->spheres,
+                  fmt::format("Number of spheres, 1 to {}: a x a in the near face and spheres / a^2 deep, a "
+                              "the largest whole number with a^2 dividing it and no more than the depth",
+                              sim::kMaxLatticeSpheres))
+      ->required();
+  cmd->add_option("-o,--output", o->output, "Scene file to write (.csg)")->required();
+  cmd->add_option("--size", o->size, "The camera's image size WxH")->default_val("512x512");
+  return [o] {
+    const int spheres = parse_whole_option("spheres", o->spheres, 1, sim::kMaxLatticeSpheres);
+    const auto [width, height] = parse_pair_option("--size", o->size, "WxH", kMaxImageSide);
+    StagedOutputs outputs({{"--output", o->output}}, {});
+    const sim::LatticeShape shape = sim::lattice_shape(spheres);
+    sim::write_text_file(outputs["--output"], sim::lattice_scene_text(shape, width, height));
+    outputs.commit();
+    fmt::print("{}: {} spheres, {} x {} x {}\n", o->output, shape.count(), shape.nx, shape.ny, shape.nz);
+    return 0;
+  };
+}
+
+}  // namespace capsim::cli

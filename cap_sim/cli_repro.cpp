@@ -1,0 +1,88 @@
+// `capsim repro`: every experiment of the paper beside its published figures,
+// written as docs/reproduction.md with its plots.
+
+#include "capsim/prepared_scene.h"
+#include "cli_commands.h"
+#include "cli_options.h"
+#include "cli_outputs.h"
+#include "cli_usage.h"
+#include "repro.h"
+#include "text_output.h"
+
+#include <fmt/core.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <tuple>
+#include <stdexcept>
+
+namespace capsim::cli {
+
+namespace {
+
+struct ReproCliOptions {
+  std::string output = "docs/reproduction.md";
+  std::string images;  // default: images/ beside the output
+  std::string size = "512x512";
+  std::string scenes = "scenes";
+  std::string threads = "0";
+  std::string frames = "64";
+};
+
+}  // namespace
+
+Command add_repro_command(CLI::App& app) {
+  auto o = std::make_shared<ReproCliOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "repro",
+      "Run every experiment of the paper (Tables 4-2 to 4-5 and 5-1, Graph 4-3) and write them beside the "
+      "published figures, with the fit of the cost constants, as a Markdown report with SVG plots");
+  cmd->add_option("-o,--output", o->output, "The report")->default_val("docs/reproduction.md");
+  cmd->add_option("--images", o->images,
+                  "Directory for the plots table-4-2.svg and graph-4-3.svg (default: images/ beside the report)");
+  cmd->add_option("--size", o->size, "Screen of every run, WxH (the paper's is 512x512)")->default_val("512x512");
+  cmd->add_option("--scenes", o->scenes, "Directory of the models (balls.csg, chess.csg, ..., disb/)")
+      ->default_val("scenes");
+  cmd->add_option("--disb-frames", o->frames, "DISB frames to run for Table 4-5, 0 to 64 (0: leave it not run)")
+      ->default_val("64");
+  cmd->add_option("--threads", o->threads, "Host threads (0 = all); the report does not depend on it")
+      ->default_val("0");
+  return [o] {
+    sim::ReproOptions options;
+    std::tie(options.width, options.height) = parse_pair_option("--size", o->size, "WxH", kMaxImageSide);
+    options.threads = parse_whole_option("--threads", o->threads, 0, kMaxThreadsOption);
+    options.table_4_5_frames = parse_whole_option("--disb-frames", o->frames, 0, 64);
+    options.scenes_dir = o->scenes;
+    if (!std::filesystem::is_directory(o->scenes)) refuse("--scenes", o->scenes, "is not a directory");
+    const std::filesystem::path report(o->output);
+    const std::filesystem::path images =
+        o->images.empty() ? report.parent_path() / "images" : std::filesystem::path(o->images);
+    StagedOutputs outputs({{"--output", o->output},
+                           {"--images (table-4-2.svg)", (images / "table-4-2.svg").string()},
+                           {"--images (graph-4-3.svg)", (images / "graph-4-3.svg").string()}},
+                          {});
+
+    const auto start = std::chrono::steady_clock::now();
+    options.log = [start](const std::string& what) {
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      fmt::print(stderr, "[{:7.1f} s] {}\n", t, what);
+    };
+    const sim::ReproResult result = sim::run_reproduction(options);
+    // The plots' path as the report links them.
+    const std::string link =
+        std::filesystem::relative(std::filesystem::absolute(images), std::filesystem::absolute(report).parent_path())
+            .generic_string();
+    sim::write_text_file(outputs["--images (table-4-2.svg)"], sim::table_4_2_plot_svg(result));
+    sim::write_text_file(outputs["--images (graph-4-3.svg)"], sim::graph_4_3_plot_svg(result));
+    sim::write_text_file(outputs["--output"], sim::reproduction_markdown(result, link.empty() ? "." : link));
+    outputs.commit();
+    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    fmt::print("{}: written ({:.1f} s)\n", o->output, t);
+    for (const sim::TargetCheck& c : sim::reproduction_targets(result))
+      fmt::print("  {}: {}\n", c.met ? "met   " : "MISSED", c.target);
+    return 0;
+  };
+}
+
+}  // namespace capsim::cli

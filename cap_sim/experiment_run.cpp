@@ -1,0 +1,70 @@
+#include "experiment_run.h"
+
+#include "capsim/parser.h"
+#include "capsim/prepared_scene.h"
+#include "capsim/tracer.h"
+
+#include <fmt/core.h>
+
+namespace capsim::sim {
+
+namespace {
+
+std::string lattice_file(const LatticeShape& shape) { return fmt::format("lattice-{}.csg", shape.count()); }
+
+}  // namespace
+
+std::string run_command(const RunSpec& spec) {
+  const bool default_size = spec.width == 512 && spec.height == 512;
+  const std::string size = default_size ? "" : fmt::format(" --size {}x{}", spec.width, spec.height);
+  std::string cmd;
+  std::string scene = spec.scene;
+  if (spec.lattice) {
+    scene = lattice_file(*spec.lattice);
+    cmd = fmt::format("capsim lattice {} -o {}{} && ", spec.lattice->count(), scene, size);
+  }
+  cmd += fmt::format("capsim simulate {} -o screen.png", scene);
+  if (!spec.lattice) cmd += size;
+  if (spec.grid > 0) cmd += fmt::format(" --grid {}", spec.grid);
+  if (spec.primary_only) cmd += " --primary-only";
+  if (!(spec.cells == CellGrid{8, 8})) cmd += " --cells " + to_string(spec.cells);
+  if (spec.mode != PixelMode::Dot) cmd += fmt::format(" --mode {}", to_string(spec.mode));
+  if (spec.profile != "cap") cmd += " --profile " + spec.profile;
+  if (spec.aa_depth > 0) cmd += fmt::format(" --aa {}", spec.aa_depth);
+  return cmd;
+}
+
+RunFigures run_experiment(const RunSpec& spec, int threads) {
+  PrepareOptions prep;
+  prep.grid = spec.grid;
+  prep.width = spec.width;
+  prep.height = spec.height;
+  const PreparedScene scene = prepare_scene(
+      spec.lattice ? make_sphere_lattice(*spec.lattice, spec.width, spec.height) : parse_scene_file(spec.scene),
+      prep);
+  TraceOptions trace;
+  trace.primary_only = spec.primary_only;
+  const Tracer tracer(scene, trace);
+  MachineConfig config;
+  config.cells = spec.cells;
+  config.mode = spec.mode;
+  config.profile = load_cost_profile(spec.profile);
+  config.aa.depth = spec.aa_depth;  // the default threshold, as the command's
+  config.screen = ScreenFormat::Srgb8;  // as for `-o screen.png`; the cycles do not depend on it
+  const SimulationResult r = simulate_frame(tracer, config, threads, false);
+
+  RunFigures f;
+  f.command = run_command(spec);
+  f.clock_hz = config.profile.clock_hz;
+  f.frame = r.frame;
+  f.spread = load_spread(r);
+  f.breakdown = r.breakdown;
+  for (const CellReport& c : r.cells) f.ops += c.ops;
+  f.voxels = r.voxel_counts;
+  f.bus = r.bus;
+  f.links = link_totals(r);
+  f.grid_divisions = scene.grid.n;
+  return f;
+}
+
+}  // namespace capsim::sim

@@ -1,0 +1,51 @@
+#pragma once
+// One simulated run of an experiment, as `capsim simulate` would do it, with
+// the figures the reproduction and the mode benchmarks report and the command
+// line that repeats it.
+
+#include "lattice_scene.h"
+#include "machine.h"
+#include "sim_report.h"
+
+#include <optional>
+#include <string>
+
+namespace capsim::sim {
+
+struct RunSpec {
+  std::string scene;                    // a scene file, or empty for the lattice
+  std::optional<LatticeShape> lattice;  // Table 4-2's lattice instead of a file
+  int width = 512, height = 512;
+  int grid = 0;  // divisions per axis; 0 = auto
+  bool primary_only = false;
+  CellGrid cells{8, 8};
+  PixelMode mode = PixelMode::Dot;
+  std::string profile = "cap";
+  int aa_depth = 0;
+};
+
+struct RunFigures {
+  std::string command;  // the shell command that repeats the run
+  std::uint64_t clock_hz = 0;
+  Cycles frame;  // the frame time: the last "done" at the host (= Max)
+  LoadSpread spread;
+  CostBreakdown breakdown;  // every cell's work and the host's voxel generation
+  OpCounts ops;             // summed over the cells
+  VoxelGenCounts voxels;    // the host's
+  BusTotals bus;
+  LinkTotals links;
+  int grid_divisions = 0;  // as used (auto resolved)
+
+  double seconds(Cycles c) const { return c.seconds(clock_hz); }
+  double frame_seconds() const { return seconds(frame); }
+};
+
+// The command line of a run, from the repository root: `capsim simulate`
+// with only the options that differ from its defaults (a lattice is first
+// written by `capsim lattice`). The screen goes to screen.png.
+std::string run_command(const RunSpec& spec);
+
+// Runs it. threads: host threads (0 = all); the figures do not depend on it.
+RunFigures run_experiment(const RunSpec& spec, int threads);
+
+}  // namespace capsim::sim

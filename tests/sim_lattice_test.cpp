@@ -1,0 +1,122 @@
+// The sphere lattices of Table 4-2: their shapes, their scene files (written by
+// `capsim lattice`, read back unchanged), and the one view all share.
+
+#include "cli_run.h"
+#include "lattice_scene.h"
+
+#include "capsim/parser.h"
+#include "capsim/prepared_scene.h"
+#include "capsim/render.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace capsim::sim {
+namespace {
+
+using capsim::testing::read_file;
+using capsim::testing::run_capsim;
+using capsim::testing::TempDir;
+
+void expect_shape(int spheres, int nx, int ny, int nz) {
+  const LatticeShape s = lattice_shape(spheres);
+  EXPECT_EQ(s.nx, nx) << spheres;
+  EXPECT_EQ(s.ny, ny) << spheres;
+  EXPECT_EQ(s.nz, nz) << spheres;
+  EXPECT_EQ(s.count(), spheres);
+}
+
+TEST(Lattice, ShapesAreCubesOrTheNearestWithASquareFace) {
+  expect_shape(16, 2, 2, 4);
+  expect_shape(512, 8, 8, 8);
+  expect_shape(1000, 10, 10, 10);
+  expect_shape(4096, 16, 16, 16);
+  expect_shape(6859, 19, 19, 19);
+  expect_shape(1, 1, 1, 1);
+  expect_shape(7, 1, 1, 7);     // a prime: one column
+  expect_shape(12, 2, 2, 3);
+  expect_shape(64, 4, 4, 4);
+  expect_shape(128, 4, 4, 8);   // not 8 x 8 x 2: the face no wider than the depth
+  EXPECT_THROW(lattice_shape(0), std::invalid_argument);
+  EXPECT_THROW(lattice_shape(kMaxLatticeSpheres + 1), std::invalid_argument);
+}
+
+TEST(Lattice, SpheresSitOnTheGridCentredOnTheViewAxis) {
+  const Scene s = make_sphere_lattice(lattice_shape(16), 64, 64);
+  ASSERT_EQ(s.primitives.size(), 16u);
+  double sx = 0, sy = 0;
+  for (const Primitive& p : s.primitives) {
+    EXPECT_EQ(p.kind, PrimitiveKind::Sphere);
+    const glm::dvec3 c(p.to_world[3]);
+    EXPECT_DOUBLE_EQ(std::abs(c.x), 1.5);  // half the spacing either side of the axis
+    EXPECT_DOUBLE_EQ(std::abs(c.y), 1.5);
+    EXPECT_EQ(std::fmod(-c.z, kLatticeSpacing), 0.0);  // layers 0, -3, -6, -9
+    EXPECT_DOUBLE_EQ(p.to_world[0][0], kLatticeRadius);
+    sx += c.x;
+    sy += c.y;
+  }
+  EXPECT_EQ(sx, 0.0);
+  EXPECT_EQ(sy, 0.0);
+}
+
+TEST(Lattice, EveryLatticeHasTheSameCamera) {
+  const Scene a = make_sphere_lattice(lattice_shape(16), 512, 512);
+  const Scene b = make_sphere_lattice(lattice_shape(6859), 512, 512);
+  ASSERT_TRUE(a.camera && b.camera);
+  EXPECT_EQ(a.camera->eye, b.camera->eye);
+  EXPECT_EQ(a.camera->center, b.camera->center);
+  EXPECT_EQ(a.camera->fov_deg, 40);
+  EXPECT_EQ(a.camera->width, 512);
+}
+
+// The share of primary rays that meet the lattice's universe (start a 3DDDA).
+double screen_met(int spheres) {
+  PrepareOptions prep;
+  prep.grid = 1;
+  const PreparedScene scene = prepare_scene(make_sphere_lattice(lattice_shape(spheres), 64, 64), prep);
+  const Tracer tracer(scene, TraceOptions{.primary_only = true});
+  RenderStats stats;
+  render(tracer, 1, &stats);
+  return static_cast<double>(stats.ops.dda_setups) / static_cast<double>(stats.ops.primary_rays);
+}
+
+TEST(Lattice, TheLargestFillsTheScreenAndSmallerOnesItsMiddle) {
+  EXPECT_EQ(screen_met(6859), 1.0);
+  const double m4096 = screen_met(4096), m512 = screen_met(512), m16 = screen_met(16);
+  EXPECT_LT(m4096, 1.0);
+  EXPECT_GT(m4096, 0.6);  // a near face 16/19 as wide: about (16/19)^2 of the screen
+  EXPECT_LT(m512, m4096);
+  EXPECT_LT(m16, m512);
+}
+
+TEST(CliLattice, WritesTheSceneThatRunsUse) {
+  TempDir dir;
+  const auto r = run_capsim("lattice 512 -o " + (dir / "l.csg") + " --size 80x60", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("512 spheres, 8 x 8 x 8"), std::string::npos) << r.out;
+  const std::string text = read_file(dir / "l.csg");
+  EXPECT_EQ(text, lattice_scene_text(lattice_shape(512), 80, 60));
+  const Scene parsed = parse_scene_file(dir / "l.csg");
+  const Scene built = make_sphere_lattice(lattice_shape(512), 80, 60);
+  ASSERT_EQ(parsed.primitives.size(), built.primitives.size());
+  for (std::size_t i = 0; i < built.primitives.size(); ++i)
+    EXPECT_EQ(parsed.primitives[i].to_world, built.primitives[i].to_world) << i;
+  EXPECT_EQ(parsed.camera->eye, built.camera->eye);
+  EXPECT_EQ(parsed.camera->width, 80);
+  EXPECT_EQ(parsed.camera->height, 60);
+}
+
+TEST(CliLattice, RefusesACountOutOfRangeAndWritesNothing) {
+  TempDir dir;
+  for (const char* count : {"0", "1000001"}) {
+    const auto r = run_capsim(std::string("lattice ") + count + " -o " + (dir / "l.csg"), dir);
+    EXPECT_EQ(r.status, 2) << count;
+    EXPECT_NE(r.err.find("is out of range (accepted: a whole number from 1 to 1000000)"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(dir / "l.csg"));
+  }
+}
+
+}  // namespace
+}  // namespace capsim::sim

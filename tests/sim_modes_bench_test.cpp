@@ -1,0 +1,91 @@
+// `capsim bench modes` at a reduced screen against its stored baseline
+// (bench/baselines/modes-48x48.json): identical figures pass; any moved figure
+// fails with a table of old, new and their ratio; --update rewrites the
+// baseline and says what moved.
+
+#include "cli_run.h"
+#include "modes_bench.h"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+namespace capsim::sim {
+namespace {
+
+using capsim::testing::read_file;
+using capsim::testing::run_capsim;
+using capsim::testing::TempDir;
+
+const std::string kBaseline = std::string(CAPSIM_SOURCE_DIR) + "/bench/baselines/modes-48x48.json";
+const std::string kArgs = " --size 48x48 --scenes " + std::string(CAPSIM_SOURCE_DIR) + "/scenes";
+
+TEST(CliBenchModes, MatchesItsStoredBaseline) {
+  TempDir dir;
+  const auto r = run_capsim("bench modes" + kArgs + " --baseline " + kBaseline + " --json " + (dir / "now.json") +
+                                " --plot " + (dir / "modes.svg"),
+                            dir);
+  EXPECT_EQ(r.status, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("all 120 runs identical to the baseline"), std::string::npos) << r.out;
+  // The table: a header and one row per run.
+  EXPECT_NE(r.out.find("model        mode  cells  aa    frame s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("disb/f00000  dot   16x16   2"), std::string::npos) << r.out;
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir / "now.json")), nlohmann::json::parse(read_file(kBaseline)));
+  EXPECT_EQ(read_file(dir / "modes.svg").find("<svg"), 0u);
+}
+
+TEST(CliBenchModes, AMovedFigureFailsWithOldNewAndRatio) {
+  TempDir dir;
+  nlohmann::json base = nlohmann::json::parse(read_file(kBaseline));
+  nlohmann::json& run = base["runs"][10];  // balls, plain, dot mode, 8x8 cells
+  ASSERT_EQ(run["model"], "balls");
+  ASSERT_EQ(run["mode"], "dot");
+  ASSERT_EQ(run["cells"], "8x8");
+  const std::uint64_t frame = run["frame_cycles"].get<std::uint64_t>();
+  run["frame_cycles"] = frame * 2;
+  {
+    std::ofstream out(dir / "old.json");
+    out << base.dump(2);
+  }
+  const auto r = run_capsim("bench modes" + kArgs + " --baseline " + (dir / "old.json"), dir);
+  EXPECT_EQ(r.status, 1) << r.out << r.err;
+  EXPECT_NE(r.out.find("1 figures differ from the baseline"), std::string::npos) << r.out;
+  const std::string row = r.out.substr(r.out.find("balls dot 8x8 aa0"));
+  EXPECT_NE(row.find("frame_cycles"), std::string::npos) << row;
+  EXPECT_NE(row.find(std::to_string(frame * 2)), std::string::npos) << row;
+  EXPECT_NE(row.find(std::to_string(frame)), std::string::npos) << row;
+  EXPECT_NE(row.find("0.500000"), std::string::npos) << row;  // new / old
+
+  // --update rewrites it as the run found it and summarises what moved.
+  const auto u = run_capsim("bench modes" + kArgs + " --baseline " + (dir / "old.json") + " --update", dir);
+  EXPECT_EQ(u.status, 0) << u.err;
+  EXPECT_NE(u.out.find("rewritten; 1 figures moved"), std::string::npos) << u.out;
+  EXPECT_EQ(nlohmann::json::parse(read_file(dir / "old.json")), nlohmann::json::parse(read_file(kBaseline)));
+}
+
+TEST(CliBenchModes, RefusesAMissingBaselineWithoutUpdate) {
+  TempDir dir;
+  const auto r = run_capsim("bench modes" + kArgs + " --baseline " + (dir / "none.json"), dir);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("none.json: no such file (write one with --update)"), std::string::npos) << r.err;
+}
+
+TEST(ModesBench, ComparisonNamesRunsOnlyOneSideHasAndRefusesAnotherScreen) {
+  const nlohmann::json run = {{"model", "balls"}, {"mode", "dot"}, {"cells", "4x4"}, {"aa", 0}, {"frame_cycles", 10}};
+  nlohmann::json a = {{"size", "48x48"}, {"profile", "cap"}, {"runs", {run}}};
+  nlohmann::json b = a;
+  b["runs"][0]["cells"] = "8x8";
+  const std::vector<MovedFigure> moved = compare_modes_bench(a, b);
+  ASSERT_EQ(moved.size(), 2u);
+  EXPECT_EQ(moved[0].run, "balls dot 4x4 aa0");
+  EXPECT_EQ(moved[0].new_value, "absent");
+  EXPECT_EQ(moved[1].run, "balls dot 8x8 aa0");
+  EXPECT_EQ(moved[1].old_value, "absent");
+  EXPECT_TRUE(compare_modes_bench(a, a).empty());
+  b = a;
+  b["size"] = "64x64";
+  EXPECT_THROW(compare_modes_bench(a, b), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace capsim::sim
