@@ -31,9 +31,6 @@ struct CellGrid {
   bool operator==(const CellGrid&) const = default;
 };
 
-// "RxC" -> grid; throws std::invalid_argument naming the text and the allowed
-// range (1 to kMaxGridSide per side).
-CellGrid parse_cell_grid(const std::string& text);
 std::string to_string(const CellGrid& grid);  // "RxC"
 
 }  // namespace capsim::sim

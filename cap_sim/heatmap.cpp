@@ -19,7 +19,7 @@ using Rgb = std::array<unsigned char, 3>;
 Rgb viridis(double t) {
   static constexpr double kStops[5][3] = {
       {68, 1, 84}, {59, 82, 139}, {33, 145, 140}, {94, 201, 98}, {253, 231, 37}};
-  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  t = (t >= 0.0 ? std::min(t, 1.0) : 0.0) * 4.0;  // NaN to 0: a cast of NaN to int is undefined
   const int i = std::min(static_cast<int>(t), 3);
   const double f = t - i;
   Rgb c;

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
       "capsim: a cycle-level simulator of Fujitsu's Cellular Array Processor (CAP)\n"
       "running the CSG ray tracer of Murakami, Sato and Hirota."};
   app.require_subcommand(0, 1);  // none is a usage error, reported below in capsim's words
-  app.set_version_flag("--version", "capsim 0.1.0");
+  app.set_version_flag("--version", "capsim " CAPSIM_VERSION);  // the project version in CMakeLists.txt
   const capsim::cli::Command render = capsim::cli::add_render_command(app);
   const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app);
   const capsim::cli::Command lattice = capsim::cli::add_lattice_command(app);

@@ -10,7 +10,7 @@
 #include "html_report.h"
 #include "machine.h"
 #include "page_data.h"
-#include "scene_builders.h"
+#include "sequence_builders.h"
 #include "sim_report.h"
 
 #include "capsim/image_io.h"
@@ -52,34 +52,12 @@ MachineConfig config_of(CellGrid grid, PixelMode mode, int aa = 0, ScreenFormat 
 
 const RunFacts kFacts{"scenes/balls.csg", "capsim simulate scenes/balls.csg -o s.png", 1.5, "0.1.0"};
 
-// Frame k of a short sequence: spheres that have moved k steps to the right.
-PreparedScene moving_frame(int k, int width, int height) {
-  std::vector<Primitive> prims;
-  for (int i = 0; i < 5; ++i) prims.push_back(testing::sphere({i * 1.5 + 0.4 * k, 0, 0}, 0.6));
-  Scene s = testing::make_scene(prims);
-  Camera cam;
-  cam.eye = {3, -12, 5};
-  cam.center = {3, 0, 0};
-  cam.up = {0, 0, 1};
-  cam.fov_deg = 45;
-  s.camera = cam;
-  PrepareOptions o;
-  o.width = width;
-  o.height = height;
-  return prepare_scene(s, o);
-}
 
 // A frame-averaged, antialiased run of five frames on 2x2 cells: every part of
 // the page at once.
 SimulationResult sequence_run() {
-  std::vector<PreparedScene> scenes;
-  for (int k = 0; k < 5; ++k) scenes.push_back(moving_frame(k, 24, 20));
-  std::vector<std::unique_ptr<Tracer>> tracers;
-  std::vector<const Tracer*> list;
-  for (const PreparedScene& s : scenes) {
-    tracers.push_back(std::make_unique<Tracer>(s, TraceOptions{}));
-    list.push_back(tracers.back().get());
-  }
+  const testing::FrameTracers frames = testing::moving_frames(5, 24, 20);
+  const std::vector<const Tracer*>& list = frames.list;
   MachineConfig config = config_of({2, 2}, PixelMode::Dot, 1);
   config.frame_average = true;
   return simulate_frames(list, config, 2, false);

@@ -5,7 +5,7 @@
 // with antialiasing and over a sequence of frames.
 
 #include "machine.h"
-#include "scene_builders.h"
+#include "sequence_builders.h"
 
 #include "capsim/parser.h"
 
@@ -127,32 +127,10 @@ TEST(CompletionCycles, KeptOnlyWhenAsked) {
   EXPECT_TRUE(r.screens[0].pixel_cycles.empty());
 }
 
-// Frame k: a row of spheres that has moved k steps to the right.
-PreparedScene moving_frame(int k, int width, int height) {
-  std::vector<Primitive> prims;
-  for (int i = 0; i < 5; ++i) prims.push_back(testing::sphere({i * 1.5 + 0.4 * k, 0, 0}, 0.6));
-  Scene s = testing::make_scene(prims);
-  Camera cam;
-  cam.eye = {3, -12, 5};
-  cam.center = {3, 0, 0};
-  cam.up = {0, 0, 1};
-  cam.fov_deg = 45;
-  s.camera = cam;
-  PrepareOptions o;
-  o.width = width;
-  o.height = height;
-  return prepare_scene(s, o);
-}
 
 TEST(CompletionCycles, EveryFrameOfASequenceCompletesWhenItsWritingEnds) {
-  std::vector<PreparedScene> scenes;
-  for (int k = 0; k < 5; ++k) scenes.push_back(moving_frame(k, 24, 20));
-  std::vector<std::unique_ptr<Tracer>> tracers;
-  std::vector<const Tracer*> list;
-  for (const PreparedScene& s : scenes) {
-    tracers.push_back(std::make_unique<Tracer>(s, TraceOptions{}));
-    list.push_back(tracers.back().get());
-  }
+  const testing::FrameTracers frames = testing::moving_frames(5, 24, 20);
+  const std::vector<const Tracer*>& list = frames.list;
   for (bool average : {false, true})
     for (int aa : {0, 1}) {
       MachineConfig config = config_of({2, 2}, PixelMode::Dot, aa, ScreenFormat::Srgb8);

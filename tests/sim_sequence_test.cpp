@@ -3,7 +3,7 @@
 
 #include "machine.h"
 #include "sim_report.h"
-#include "scene_builders.h"
+#include "sequence_builders.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"
@@ -58,34 +58,6 @@ TEST(FrameAveraging, ShiftedLayoutsGiveEveryPixelOneOwnerAndInvertTheirWindows) 
       }
 }
 
-// Frame k: a row of spheres and boxes that has moved k steps to the right.
-PreparedScene moving_frame(int k, int width, int height) {
-  std::vector<Primitive> prims;
-  for (int i = 0; i < 6; ++i) prims.push_back(testing::sphere({i * 1.5 + 0.4 * k, 0, 0}, 0.6));
-  for (int i = 0; i < 4; ++i) prims.push_back(testing::box({i * 2.0 + 0.4 * k, -1, -1.8}, {1, 1, 0.6}));
-  Scene s = testing::make_scene(prims);
-  Camera cam;
-  cam.eye = {4, -14, 6};
-  cam.center = {4, 0, 0};
-  cam.up = {0, 0, 1};
-  cam.fov_deg = 45;
-  s.camera = cam;
-  PrepareOptions o;
-  o.width = width;
-  o.height = height;
-  return prepare_scene(s, o);
-}
-
-struct Frames {
-  std::vector<PreparedScene> scenes;
-  std::vector<std::unique_ptr<Tracer>> tracers;
-  std::vector<const Tracer*> list;
-  Frames(int count, int width, int height) {
-    for (int k = 0; k < count; ++k) scenes.push_back(moving_frame(k, width, height));
-    for (const PreparedScene& s : scenes) tracers.push_back(std::make_unique<Tracer>(s, TraceOptions{}));
-    for (const auto& t : tracers) list.push_back(t.get());
-  }
-};
 
 MachineConfig config_of(CellGrid grid, int aa, bool average) {
   MachineConfig c;
@@ -98,7 +70,7 @@ MachineConfig config_of(CellGrid grid, int aa, bool average) {
 }
 
 TEST(Sequence, WithABarrierEachFrameTakesItsOwnRunLessTheProgramBroadcast) {
-  const Frames frames(3, 40, 30);
+  const testing::FrameTracers frames = testing::moving_frames(3, 40, 30, 6, 4);
   const MachineConfig config = config_of({4, 4}, 0, false);
   const SimulationResult run = simulate_frames(frames.list, config, 2, false);
   ASSERT_EQ(run.units.size(), 3u);
@@ -118,7 +90,7 @@ TEST(Sequence, WithABarrierEachFrameTakesItsOwnRunLessTheProgramBroadcast) {
 }
 
 TEST(Sequence, FrameAveragedScreensAreTheRenderedFrames) {
-  const Frames frames(5, 23, 17);
+  const testing::FrameTracers frames = testing::moving_frames(5, 23, 17, 6, 4);
   for (int aa : {0, 1}) {
     const SimulationResult run = simulate_frames(frames.list, config_of({2, 3}, aa, true), 2, false);
     ASSERT_EQ(run.screens.size(), 5u);
@@ -136,7 +108,7 @@ TEST(Sequence, FrameAveragingGroupsRxCFramesAndEvensTheLoad) {
   // Antialiasing puts the work on the moving edges. With a barrier per frame
   // every frame's slowest cell counts; averaged over a group with the pattern
   // turned, each cell's total is nearly the mean.
-  const Frames frames(8, 48, 32);
+  const testing::FrameTracers frames = testing::moving_frames(8, 48, 32, 6, 4);
   const SimulationResult plain = simulate_frames(frames.list, config_of({2, 2}, 1, false), 2, false);
   const SimulationResult averaged = simulate_frames(frames.list, config_of({2, 2}, 1, true), 2, false);
   ASSERT_EQ(averaged.units.size(), 2u);
@@ -153,7 +125,7 @@ TEST(Sequence, FrameAveragingGroupsRxCFramesAndEvensTheLoad) {
 }
 
 TEST(Sequence, ReportsAndTracesDoNotDependOnHostThreads) {
-  const Frames frames(4, 32, 24);
+  const testing::FrameTracers frames = testing::moving_frames(4, 32, 24, 6, 4);
   for (bool average : {false, true}) {
     const MachineConfig config = config_of({2, 2}, 1, average);
     const SimulationResult one = simulate_frames(frames.list, config, 1, false);
@@ -170,7 +142,7 @@ TEST(Sequence, ReportsAndTracesDoNotDependOnHostThreads) {
 }
 
 TEST(Sequence, FrameAveragingNeedsDotMode) {
-  const Frames frames(2, 8, 8);
+  const testing::FrameTracers frames = testing::moving_frames(2, 8, 8, 6, 4);
   MachineConfig config = config_of({2, 2}, 0, true);
   config.mode = PixelMode::Line;
   EXPECT_THROW(simulate_frames(frames.list, config, 1, false), std::invalid_argument);
