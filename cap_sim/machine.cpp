@@ -158,10 +158,11 @@ std::uint64_t simulation_memory(const MachineConfig& config, int width, int heig
   if (aa) {
     // One frame's corners (and their cycles, for a float screen) while it is traced.
     bytes += corners * (sizeof(ScreenSample) + (config.screen == ScreenFormat::Float ? sizeof(std::uint64_t) : 0));
-    // A unit's exchange plan: up to 3 corners needed from other cells per
-    // pixel, each kept as a need and in at most two messages (4 bytes each).
-    const std::uint64_t unit = config.frame_average ? std::min<std::uint64_t>(frames, config.cells.cell_count()) : 1;
-    bytes += unit * pixels * 3 * (4 + 4 + 4);
+    // Every unit's exchange plan, made before the run: up to 3 corners needed
+    // from other cells per pixel, each kept as a need and in at most two
+    // messages; and each corner a cell took in, kept for the report (4 bytes
+    // each).
+    bytes += static_cast<std::uint64_t>(frames) * pixels * 3 * (4 + 4 + 4 + 4);
   }
   return bytes;
 }

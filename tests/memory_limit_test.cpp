@@ -70,9 +70,17 @@ TEST(MemoryEstimate, SimulateHoldsWhatEachScreenFormatNeedsPerPixel) {
   config.screen = sim::ScreenFormat::Float;
   EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * 61);
   // Antialiased: also samples per pixel (4 + 4), one frame's corners (24 and
-  // 8 for their cycles) and the exchange plan (3 x 12 a pixel).
+  // 8 for their cycles), and per pixel of every frame the exchange plan and
+  // the corners taken in (3 x 16).
   config.aa.depth = 2;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * (69 + 3 * 12) + 641u * 481 * 32);
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * (69 + 3 * 16) + 641u * 481 * 32);
+  // Sixty-four frames, barrier or frame averaged: every frame's plan is made
+  // before the run.
+  config.screen = sim::ScreenFormat::Srgb8;
+  const std::uint64_t sequence = 640u * 480 * (64 * (6 + 3 * 16) + 1) + 641u * 481 * 24;
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), sequence);
+  config.frame_average = true;
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), sequence);
 }
 
 }  // namespace
