@@ -1,6 +1,6 @@
 #pragma once
 // The oracle's own exact ray-primitive intersection, written apart from the
-// tracer's (src/primitive_geometry.cpp) so that the two can disagree. Each
+// tracer's (src/trace/primitive_geometry.cpp) so that the two can disagree. Each
 // canonical primitive is a convex solid, so a line meets it in one interval; the
 // interval is built as the intersection of the solid's defining constraints
 // (slabs, a quadric, a nappe half-space), all in double precision.

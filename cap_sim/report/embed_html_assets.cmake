@@ -1,4 +1,4 @@
-# Writes a C++ source holding the HTML report's own files (cap_sim/html/: the
+# Writes a C++ source holding the HTML report's own files (cap_sim/report/html/: the
 # page template, its styles and its script), so the capsim binary needs no data
 # files at run time and the page nothing beside it.
 #   cmake -DASSET_DIR=<dir> -DOUTPUT=<file.cpp> -P embed_html_assets.cmake
@@ -24,7 +24,7 @@ foreach(pair "page;report.html" "style;report.css" "script;report.js")
   endforeach()
   string(APPEND members "    R\"capsim_html(${text})capsim_html\",\n")
 endforeach()
-set(source "// Generated from cap_sim/html/ by cap_sim/embed_html_assets.cmake.
+set(source "// Generated from cap_sim/report/html/ by cap_sim/report/embed_html_assets.cmake.
 #include \"html_assets.h\"
 
 namespace capsim::sim {

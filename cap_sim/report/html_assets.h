@@ -1,6 +1,6 @@
 #pragma once
-// The HTML report's own files, compiled into the binary from cap_sim/html/ by
-// cap_sim/embed_html_assets.cmake: the page template (report.html), its styles
+// The HTML report's own files, compiled into the binary from cap_sim/report/html/ by
+// cap_sim/report/embed_html_assets.cmake: the page template (report.html), its styles
 // (report.css) and its script (report.js).
 
 #include <string_view>

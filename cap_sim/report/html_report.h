@@ -10,7 +10,7 @@
 // each in a <script type="application/json"> element (script_safe_json), plus
 // the images as PNG data URIs and each frame's completion cycles
 // (pack_completion_cycles). The essentials are plain HTML; the page's own
-// script (cap_sim/html/report.js) adds the player, the heat maps' hover, the
+// script (cap_sim/report/html/report.js) adds the player, the heat maps' hover, the
 // sortable table, the timeline and the charts.
 
 #include "machine.h"

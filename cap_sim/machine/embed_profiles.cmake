@@ -13,7 +13,7 @@ foreach(profile ${profiles})
   endif()
   string(APPEND entries "    {\"${name}\", R\"capsim_json(${text})capsim_json\"},\n")
 endforeach()
-set(source "// Generated from cap_sim/profiles/*.json by cap_sim/embed_profiles.cmake.
+set(source "// Generated from cap_sim/profiles/*.json by cap_sim/machine/embed_profiles.cmake.
 #include \"builtin_profiles.h\"
 
 namespace capsim::sim {
