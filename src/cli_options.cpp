@@ -161,7 +161,9 @@ std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed
   std::vector<Scene> scenes;
   scenes.reserve(s.scenes.size());
   if (s.animate) {
-    for (int k = 0; k < s.frames; ++k) scenes.push_back(parse_scene_file(s.scenes[0], {}, animation_time(k, s.frames)));
+    // Read once: every frame sees the same text.
+    const std::string text = read_scene_file(s.scenes[0]);
+    for (int k = 0; k < s.frames; ++k) scenes.push_back(parse_scene(text, s.scenes[0], {}, animation_time(k, s.frames)));
   } else {
     for (const std::string& file : s.scenes) scenes.push_back(parse_scene_file(file));
   }

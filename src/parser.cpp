@@ -423,7 +423,7 @@ Scene parse_scene(std::string_view text, const std::string& file_name, const Par
   return Interpreter(file, limits.max_primitives).run(calls, has_statements, end);
 }
 
-Scene parse_scene_file(const std::string& path, const ParseLimits& limits, double t) {
+std::string read_scene_file(const std::string& path, const ParseLimits& limits) {
   auto file = std::make_shared<const std::string>(path);
   SourceLoc whole_file{file, 0, 0};
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
@@ -444,7 +444,11 @@ Scene parse_scene_file(const std::string& path, const ParseLimits& limits, doubl
   }
   if (std::ferror(f.get()))
     throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
-  return parse_scene(text, path, limits, t);
+  return text;
+}
+
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits, double t) {
+  return parse_scene(read_scene_file(path, limits), path, limits, t);
 }
 
 }  // namespace capsim

@@ -77,8 +77,8 @@ TEST(CliFrames, FramesMatchOpenScadsAnimateExports) {
   EXPECT_FALSE(std::filesystem::exists(dir / "t00004.png"));
 }
 
-// simulate --frames runs the same frames as render --frames, one per $t,
-// reports them as a sequence and counts them in its progress.
+// simulate --frames runs the same frames as render --frames, one per $t, and
+// reports them as a sequence.
 TEST(CliFrames, SimulateRunsTheFramesRenderDoes) {
   TempDir dir;
   const std::string scene = dir / "s.csg";

@@ -30,4 +30,10 @@ Scene parse_scene(std::string_view text, const std::string& file_name,
                   const ParseLimits& limits = {}, double t = 0);
 Scene parse_scene_file(const std::string& path, const ParseLimits& limits = {}, double t = 0);
 
+// The text of a scene file, for parse_scene; throws SceneError ("FILE:
+// message") where parse_scene_file would: a file that cannot be read or is
+// past the size limit. An animation reads its file once and parses the text
+// once per frame.
+std::string read_scene_file(const std::string& path, const ParseLimits& limits = {});
+
 }  // namespace capsim
