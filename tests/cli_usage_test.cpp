@@ -104,6 +104,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "capsim render: unknown option --cells (capsim render --help lists every option)"},
         UsageCase{"render BALLS -o OUT.png --aa 9",
                   "capsim render: --aa 9 is out of range (accepted: 0 to 8; 0 = one sample at each pixel centre)"},
+        UsageCase{"render BALLS -o OUT.png --frames", with("capsim render: --frames needs a value", kFramesRange)},
         UsageCase{"render BALLS -o OUT.png --frames 0", with("capsim render: --frames 0 is out of range", kFramesRange)},
         UsageCase{"render BALLS -o OUT.png --frames 100000",
                   with("capsim render: --frames 100000 is out of range", kFramesRange)},
