@@ -1,4 +1,5 @@
-// Recursive-descent reader for the module-call structure of scene files.
+// Recursive-descent reader for the module-call structure of scene files and
+// for the expressions of their arguments, evaluated as they are read.
 
 #include "scene_syntax.h"
 
