@@ -98,6 +98,26 @@ TEST(CliFrames, SimulateRunsTheFramesRenderDoes) {
   EXPECT_NE(r.out.find("Table 4-5 form, 3 frames:"), std::string::npos) << r.out;
 }
 
+// The reports and traces of an animation are the same bytes on 1 and 2 host
+// threads: every frame's scene is parsed from the same text at its own $t.
+TEST(CliFrames, ReportsAndTracesDoNotDependOnHostThreads) {
+  TempDir dir;
+  const std::string run = "simulate " + kAnim + "/model.scad --frames 3 --size 32x24 --cells 2x2 --aa 1";
+  std::string report[2], trace[2];
+  for (int threads = 1; threads <= 2; ++threads) {
+    const std::string tag = std::to_string(threads);
+    const RunResult r = run_capsim(run + " --threads " + tag + " -o " + (dir / ("s" + tag + ".png")) + " --report " +
+                                       (dir / ("r" + tag + ".json")) + " --trace " + (dir / ("t" + tag + ".json")),
+                                   dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    report[threads - 1] = read_file(dir / ("r" + tag + ".json"));
+    trace[threads - 1] = read_file(dir / ("t" + tag + ".json"));
+  }
+  EXPECT_FALSE(report[0].empty());
+  EXPECT_EQ(report[0], report[1]);
+  EXPECT_EQ(trace[0], trace[1]);
+}
+
 // As with `openscad --animate 1`, one frame is still numbered.
 TEST(CliFrames, OneFrameIsNumbered) {
   TempDir dir;
