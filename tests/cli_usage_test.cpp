@@ -42,6 +42,7 @@ TEST_P(CliUsageError, ExitsTwoWithOneLineNamingTheOptionAndItsRange) {
 const char* const kSizeRange = "(accepted: WxH, W and H whole numbers from 1 to 16384, e.g. 640x480)";
 const char* const kGridRange = "(accepted: 1 to 256, or auto)";
 const char* const kThreadsRange = "(accepted: 0 to 1024; 0 = all hardware threads)";
+const char* const kFramesRange = "(accepted: 1 to 99999, with one scene file)";
 const char* const kCellsRange = "(accepted: RxC, R and C whole numbers from 1 to 32, e.g. 8x8)";
 
 std::string with(const std::string& a, const std::string& b) { return a + " " + b; }
@@ -104,7 +105,16 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"render BALLS -o OUT.png --cells 2x2",
                   "capsim render: unknown option --cells (capsim render --help lists every option)"},
         UsageCase{"render BALLS -o OUT.png --aa 9",
-                  "capsim render: --aa 9 is out of range (accepted: 0 to 8; 0 = one sample at each pixel centre)"}),
+                  "capsim render: --aa 9 is out of range (accepted: 0 to 8; 0 = one sample at each pixel centre)"},
+        UsageCase{"render BALLS -o OUT.png --frames", with("capsim render: --frames needs a value", kFramesRange)},
+        UsageCase{"render BALLS -o OUT.png --frames 0", with("capsim render: --frames 0 is out of range", kFramesRange)},
+        UsageCase{"render BALLS -o OUT.png --frames 100000",
+                  with("capsim render: --frames 100000 is out of range", kFramesRange)},
+        UsageCase{"render BALLS -o OUT.png --frames 2.5",
+                  with("capsim render: --frames 2.5 is not a whole number", kFramesRange)},
+        UsageCase{"render BALLS BALLS -o OUT.png --frames 4",
+                  "capsim render: --frames animates one scene file, not a sequence of 2 (the files of a sequence "
+                  "already are its frames)"}),
     case_name);
 
 INSTANTIATE_TEST_SUITE_P(
@@ -122,6 +132,10 @@ INSTANTIATE_TEST_SUITE_P(
         UsageCase{"simulate BALLS -o OUT.png --cells 33x1", with("capsim simulate: --cells 33x1 is out of range", kCellsRange)},
         UsageCase{"simulate BALLS -o OUT.png --cells 8by8", with("capsim simulate: --cells 8by8 is not RxC", kCellsRange)},
         UsageCase{"simulate BALLS -o OUT.png --cells", with("capsim simulate: --cells needs a value", kCellsRange)},
+        UsageCase{"simulate BALLS BALLS BALLS -o OUT.png --frames 2",
+                  "capsim simulate: --frames animates one scene file, not a sequence of 3 (the files of a sequence "
+                  "already are its frames)"},
+        UsageCase{"simulate BALLS -o OUT.png --frames -1", with("capsim simulate: --frames -1 is out of range", kFramesRange)},
         UsageCase{"simulate BALLS -o OUT.png --mode diagonal",
                   "capsim simulate: --mode diagonal is not a pixel mode (accepted: block, line or dot)"},
         UsageCase{"simulate BALLS -o OUT.png --profile no-such-profile",

@@ -608,20 +608,18 @@ TEST(ParserRefusesConstructs, Assignment) {
   EXPECT_TRUE(Refused("$fn = 32;\ncube();", 1, 1, "variable assignment '$fn = ...'"));
 }
 
-TEST(ParserRefusesConstructs, Expressions) {
-  EXPECT_TRUE(Refused("cube(1+2);", 1, 7, "expressions are not supported (found operator '+'"));
-  EXPECT_TRUE(Refused("translate([1, 2 * 3, 0]) cube();", 1, 17,
-                      "expressions are not supported (found operator '*'"));
-  EXPECT_TRUE(Refused("cube(-[1, 2, 3]);", 1, 6, "expressions are not supported (found '-')"));
-  EXPECT_TRUE(Refused("sphere(r = 2 % 1);", 1, 14, "found operator '%'"));
-  EXPECT_TRUE(Refused("cube(center = 1 == 1);", 1, 17, "found operator '=='"));
-  EXPECT_TRUE(Refused("sphere(r = (2));", 1, 12, "expressions are not supported (found '(')"));
+// Expressions are evaluated (scene_expression_test.cpp holds their tests);
+// variables other than $t and PI are refused.
+TEST(ParserReadsExpressions, ArgumentsAreEvaluated) {
+  Scene s = parse("translate([1, 2 * 3, -(1 + 1)]) sphere(r = max(1, 2) % 1.5);");
+  EXPECT_TRUE(Near(world("translate([1, 2 * 3, -(1 + 1)]) sphere(r = 1);", {0, 0, 0}), {1, 6, -2}));
+  EXPECT_TRUE(Near(apply(s.primitives.at(0).to_world, {1, 0, 0}), {1.5, 6, -2}));
 }
 
-TEST(ParserRefusesConstructs, VariablesFunctionCallsRanges) {
-  EXPECT_TRUE(Refused("cube(size);", 1, 6, "variables are not supported ('size')"));
-  EXPECT_TRUE(Refused("sphere(r = PI);", 1, 12, "variables are not supported ('PI')"));
-  EXPECT_TRUE(Refused("cube(max(1, 2));", 1, 6, "function calls are not supported ('max(...)')"));
+TEST(ParserRefusesConstructs, VariablesAndRanges) {
+  EXPECT_TRUE(Refused("cube(size);", 1, 6, "unknown variable 'size'"));
+  EXPECT_TRUE(Refused("sphere(r = pi);", 1, 12, "unknown variable 'pi'"));
+  EXPECT_TRUE(Refused("cube(mux(1, 2));", 1, 6, "unknown function 'mux' (did you mean 'max'?)"));
   EXPECT_TRUE(
       Refused("translate([0:1:3]) cube();", 1, 13, "ranges [start:step:end] are not supported"));
 }
@@ -1051,8 +1049,8 @@ int depth_of_first_leaf(const CsgNode& root) {
 }
 
 constexpr std::string_view kTooDeep =
-    "nesting deeper than 1000 levels is not supported (calls' children, { } blocks and [ ] "
-    "vectors inside one another)";
+    "nesting deeper than 1000 levels is not supported (calls' children, { } blocks, [ ] vectors "
+    "and the ( ), ? and ^ of expressions inside one another)";
 
 // The documented limit, 1000 levels, is read whole by every kind of nesting.
 TEST(ParserNesting, AThousandLevelsAreRead) {
@@ -1082,6 +1080,10 @@ TEST(ParserNesting, DeeperIsRefusedWhereTheLimitIsPassed) {
   EXPECT_TRUE(Refused(repeated("union() {", 5000) + "sphere(1);" + repeated("}", 5000), 1,
                       9 * 1001, kTooDeep));
   EXPECT_TRUE(Refused(repeated("{", 3000), 1, 1001, kTooDeep));
+  // Expressions add their levels to those of the calls around them.
+  EXPECT_TRUE(Refused(repeated("union() {", 500) + "sphere(r = " + repeated("(", 501) + "1" +
+                          repeated(")", 501) + ");" + repeated("}", 500),
+                      1, 9 * 500 + 11 + 501, kTooDeep));
   EXPECT_TRUE(Refused("sphere(r=" + repeated("[", 100000) + "1" + repeated("]", 100000) + ");", 1,
                       10 + 1000, kTooDeep));
 }

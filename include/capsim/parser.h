@@ -24,8 +24,16 @@ struct ParseLimits {
 // subset and on every bad value; never returns a partial scene. A file past the
 // size limit is refused as a whole ("FILE: message") before it is parsed, a
 // primitive past the limit where it stands.
+// `t` is the value of OpenSCAD's $t in the scene's expressions (the
+// animation time, 0 <= t < 1 in an animation; docs/animation.md).
 Scene parse_scene(std::string_view text, const std::string& file_name,
-                  const ParseLimits& limits = {});
-Scene parse_scene_file(const std::string& path, const ParseLimits& limits = {});
+                  const ParseLimits& limits = {}, double t = 0);
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits = {}, double t = 0);
+
+// The text of a scene file, for parse_scene; throws SceneError ("FILE:
+// message") where parse_scene_file would: a file that cannot be read or is
+// past the size limit. An animation reads its file once and parses the text
+// once per frame.
+std::string read_scene_file(const std::string& path, const ParseLimits& limits = {});
 
 }  // namespace capsim

@@ -18,6 +18,11 @@ void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
   cmd.add_option("scene", o.scenes,
                  "Scene file (OpenSCAD CSG grammar; see docs/scene-format.md); several files are the "
                  "frames of one sequence, e.g. OpenSCAD's --animate exports (docs/animation.md)");
+  cmd.add_option("--frames", o.frames,
+                 fmt::format("Animate the one scene file as 'openscad --animate K' does: K frames, "
+                             "1 to {}, at $t = k / K for k = 0 .. K-1, written as out00000.png, ... "
+                             "(docs/animation.md)",
+                             kMaxFramesOption));
   cmd.add_option("-o,--output", o.output, "Output image (required): .png (8-bit sRGB) or .exr (linear "
                                           "float R, G, B, A, Z, id)");
   cmd.add_option("--size", o.size,
@@ -106,6 +111,15 @@ TracerSettings check_tracer_options(const TracerOptions& o) {
   TracerSettings s;
   if (o.scenes.empty()) throw UsageError(fmt::format("SCENE is required (accepted: {})", accepted_values("scene")));
   s.scenes = o.scenes;
+  s.frames = static_cast<int>(o.scenes.size());
+  if (!o.frames.empty()) {
+    if (o.scenes.size() > 1)
+      throw UsageError(fmt::format("--frames animates one scene file, not a sequence of {} (the files of a "
+                                   "sequence already are its frames)",
+                                   o.scenes.size()));
+    s.frames = parse_whole_option("--frames", o.frames, 1, kMaxFramesOption);
+    s.animate = true;
+  }
   if (o.output.empty())
     throw UsageError(fmt::format("-o/--output is required (accepted: {})", accepted_values("--output")));
   if (!is_supported_image_path(o.output)) refuse("--output", o.output, "has an unsupported image type");
@@ -146,7 +160,13 @@ void check_memory(const TracerSettings& s, ImageSize size, const MemoryNeed& nee
 std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need) {
   std::vector<Scene> scenes;
   scenes.reserve(s.scenes.size());
-  for (const std::string& file : s.scenes) scenes.push_back(parse_scene_file(file));
+  if (s.animate) {
+    // Read once: every frame sees the same text.
+    const std::string text = read_scene_file(s.scenes[0]);
+    for (int k = 0; k < s.frames; ++k) scenes.push_back(parse_scene(text, s.scenes[0], {}, animation_time(k, s.frames)));
+  } else {
+    for (const std::string& file : s.scenes) scenes.push_back(parse_scene_file(file));
+  }
   // Every frame takes the first one's size: --size, or the first camera's.
   const ImageSize size = image_size(scenes[0], s.prepare);
   check_memory(s, size, need, static_cast<int>(scenes.size()));
@@ -160,12 +180,14 @@ std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed
   return prepared;
 }
 
-std::string frame_output_option(int k, int n) {
-  return n == 1 ? "--output" : fmt::format("--output (frame {})", k);
+double animation_time(int k, int frames) { return k * (1.0 / frames); }
+
+std::string frame_output_option(int k, bool numbered) {
+  return numbered ? fmt::format("--output (frame {})", k) : "--output";
 }
 
-std::string frame_output(const std::string& output, int k, int n) {
-  if (n == 1) return output;
+std::string frame_output(const std::string& output, int k, bool numbered) {
+  if (!numbered) return output;
   const std::filesystem::path p(output);
   return (p.parent_path() / fmt::format("{}{:05d}{}", p.stem().string(), k, p.extension().string())).string();
 }

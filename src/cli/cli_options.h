@@ -19,9 +19,14 @@ namespace capsim::cli {
 // many as it has (see host_arena_concurrency).
 inline constexpr int kMaxThreadsOption = 1024;
 
+// --frames accepts 1 to this: frame numbers keep OpenSCAD's five digits
+// (out00000.png ... out99999.png).
+inline constexpr int kMaxFramesOption = 99999;
+
 // The options as typed; check_tracer_options turns them into settings.
 struct TracerOptions {
   std::vector<std::string> scenes;  // one scene, or the frames of a sequence
+  std::string frames;               // --frames K; empty = not given
   std::string output;
   std::string size;           // "WxH"; empty = the scene camera's size
   std::string grid = "auto";  // divisions per axis, or "auto"
@@ -35,6 +40,13 @@ struct TracerOptions {
 // The options checked and parsed.
 struct TracerSettings {
   std::vector<std::string> scenes;
+  // Frames of the run: the scene files' count, or --frames K, which evaluates
+  // the one scene file at $t = k / K for k = 0 .. K-1.
+  int frames = 1;
+  bool animate = false;  // --frames given
+  // Outputs numbered as OpenSCAD numbers them (out00000.png, ...): for a
+  // sequence of files and for any --frames.
+  bool numbered_outputs() const { return animate || frames > 1; }
   std::string output;
   PrepareOptions prepare;  // size (0x0 = the scene camera's) and grid (0 = auto)
   int threads = 0;
@@ -67,16 +79,20 @@ std::pair<int, int> parse_pair_option(const std::string& option, const std::stri
 // problems. Between the two, once the image size is known (it may come from
 // the first scene's camera), refuses with UsageError an image whose buffers
 // would need more memory than --max-memory or, by default, the process's
-// limits. Several files are the frames of one sequence: every frame gets the
-// first one's image size, and frames without a camera statement share the
-// camera that frames all of them (frame_sequence).
+// limits. Several files, or --frames, are the frames of one sequence: every
+// frame gets the first one's image size, and frames without a camera statement
+// share the camera that frames all of them (frame_sequence).
 std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need);
 
-// The file frame k of n is written to: `output` itself for one frame, else
+// The value of $t in frame k of an animation of `frames` frames, computed as
+// OpenSCAD's --animate computes it: k * (1.0 / frames).
+double animation_time(int k, int frames);
+
+// The file frame k is written to: `output` itself when not numbered, else
 // OpenSCAD's numbering before the extension (out.png -> out00000.png, ...).
-std::string frame_output(const std::string& output, int k, int n);
-// The name its staged output goes by in messages: "--output", or for a
-// sequence "--output (frame k)".
-std::string frame_output_option(int k, int n);
+std::string frame_output(const std::string& output, int k, bool numbered);
+// The name its staged output goes by in messages: "--output", or when
+// numbered "--output (frame k)".
+std::string frame_output_option(int k, bool numbered);
 
 }  // namespace capsim::cli

@@ -17,10 +17,11 @@ Command add_render_command(CLI::App& app) {
   add_tracer_options(*cmd, *opts);
   return [opts] {
     const TracerSettings settings = check_tracer_options(*opts);
-    const int frames = static_cast<int>(settings.scenes.size());
+    const int frames = settings.frames;
+    const bool numbered = settings.numbered_outputs();
     std::vector<OutputOption> staged;
     for (int k = 0; k < frames; ++k)
-      staged.push_back({frame_output_option(k, frames), frame_output(settings.output, k, frames)});
+      staged.push_back({frame_output_option(k, numbered), frame_output(settings.output, k, numbered)});
     StagedOutputs outputs(staged, settings.scenes);
     const bool png = is_png_path(settings.output);
     const AntialiasOptions aa = settings.aa;
@@ -40,7 +41,7 @@ Command add_render_command(CLI::App& app) {
     for (int k = 0; k < frames; ++k) {
       const Tracer tracer(scenes[k], settings.trace);
       Progress* rows = frames == 1 ? &progress : nullptr;
-      PendingFile& out = outputs[frame_output_option(k, frames)];
+      PendingFile& out = outputs[frame_output_option(k, numbered)];
       if (png) {
         // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
         std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);

@@ -43,6 +43,7 @@ std::string command_line(const TracerOptions& o, const SimulateOptions& s, int w
   std::string line = fmt::format("capsim simulate {} -o {} --size {}x{} --grid {} --cells {} --mode {} --profile {}",
                                  fmt::join(o.scenes, " "), o.output, width, height, o.grid, s.cells, s.mode,
                                  s.profile);
+  if (!o.frames.empty()) line += fmt::format(" --frames {}", o.frames);
   if (o.primary_only) line += " --primary-only";
   if (o.aa != "0") line += fmt::format(" --aa {} --aa-threshold {}", o.aa, o.aa_threshold);
   if (s.frame_average) line += " --frame-average";
@@ -118,12 +119,13 @@ Command add_simulate_command(CLI::App& app) {
     config.aa = settings.aa;
     const bool png = is_png_path(settings.output);
     config.screen = png ? sim::ScreenFormat::Srgb8 : sim::ScreenFormat::Float;
-    const int frames = static_cast<int>(settings.scenes.size());
+    const int frames = settings.frames;
+    const bool numbered = settings.numbered_outputs();
     std::vector<std::string> inputs = settings.scenes;
     if (!is_builtin_profile(sim->profile)) inputs.push_back(sim->profile);
     std::vector<OutputOption> staged;
     for (int k = 0; k < frames; ++k)
-      staged.push_back({frame_output_option(k, frames), frame_output(settings.output, k, frames)});
+      staged.push_back({frame_output_option(k, numbered), frame_output(settings.output, k, numbered)});
     for (const OutputOption& o : std::vector<OutputOption>{
              {"--report", sim->report}, {"--trace", sim->trace}, {"--heatmap", sim->heatmap}, {"--html", sim->html}})
       staged.push_back(o);
@@ -157,7 +159,7 @@ Command add_simulate_command(CLI::App& app) {
 
     for (int k = 0; k < frames; ++k) {
       const sim::FrameScreen& screen = result.screens[k];
-      PendingFile& out = outputs[frame_output_option(k, frames)];
+      PendingFile& out = outputs[frame_output_option(k, numbered)];
       if (png) {
         write_png_rgb8(out, result.width, result.height, screen.screen_srgb8);
       } else {

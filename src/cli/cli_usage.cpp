@@ -18,6 +18,7 @@ std::string accepted_values(const std::string& option) {
     return "one or more scene files in the CSG grammar of docs/scene-format.md (several are the frames of a "
            "sequence)";
   if (option == "--output") return "a path ending in .png or .exr";
+  if (option == "--frames") return fmt::format("1 to {}, with one scene file", kMaxFramesOption);
   if (option == "--size")
     return fmt::format("WxH, W and H whole numbers from 1 to {}, e.g. 640x480", kMaxImageSide);
   if (option == "--grid") return fmt::format("1 to {}, or auto", kMaxGridDivisions);

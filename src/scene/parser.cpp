@@ -406,7 +406,8 @@ namespace {
 
 }  // namespace
 
-Scene parse_scene(std::string_view text, const std::string& file_name, const ParseLimits& limits) {
+Scene parse_scene(std::string_view text, const std::string& file_name, const ParseLimits& limits,
+                  double t) {
   auto file = std::make_shared<const std::string>(file_name);
   if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
@@ -414,7 +415,7 @@ Scene parse_scene(std::string_view text, const std::string& file_name, const Par
   // Holds the lists of the calls (see scene_syntax.h); declared first, so it
   // outlives them.
   std::pmr::monotonic_buffer_resource memory;
-  std::pmr::vector<Call> calls = scene_file::read_calls(tokens, &memory, &end);
+  std::pmr::vector<Call> calls = scene_file::read_calls(tokens, &memory, &end, t);
   const bool has_statements = tokens.size() > 1;
   // The calls view the text, not the tokens: the tokens' memory can go back to
   // the heap for the scene about to be built.
@@ -422,7 +423,7 @@ Scene parse_scene(std::string_view text, const std::string& file_name, const Par
   return Interpreter(file, limits.max_primitives).run(calls, has_statements, end);
 }
 
-Scene parse_scene_file(const std::string& path, const ParseLimits& limits) {
+std::string read_scene_file(const std::string& path, const ParseLimits& limits) {
   auto file = std::make_shared<const std::string>(path);
   SourceLoc whole_file{file, 0, 0};
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "rb"), &std::fclose);
@@ -443,7 +444,11 @@ Scene parse_scene_file(const std::string& path, const ParseLimits& limits) {
   }
   if (std::ferror(f.get()))
     throw SceneError(whole_file, fmt::format("cannot read: {}", std::strerror(errno)));
-  return parse_scene(text, path, limits);
+  return text;
+}
+
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits, double t) {
+  return parse_scene(read_scene_file(path, limits), path, limits, t);
 }
 
 }  // namespace capsim

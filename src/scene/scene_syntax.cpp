@@ -1,17 +1,24 @@
-// Recursive-descent reader for the module-call structure of scene files.
+// Recursive-descent reader for the module-call structure of scene files and
+// for the expressions of their arguments, evaluated as they are read.
 
 #include "scene_syntax.h"
+
+#include "scene_args.h"
+#include "scene_expression.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <iterator>
 #include <string_view>
 
 namespace capsim::scene_file {
 namespace {
+
+constexpr double kPi = 3.14159265358979323846;  // OpenSCAD's PI (M_PI)
 
 constexpr std::string_view kPlainTree =
     "scene files hold a plain CSG tree as 'openscad -o model.csg model.scad' writes it; "
@@ -29,22 +36,10 @@ bool is_language_keyword(std::string_view name) {
   return false;
 }
 
-// Symbols that, right after a value, can only continue an expression.
-bool is_operator(const Token& t) {
-  static constexpr std::array<std::string_view, 19> kOps = {"+",  "-", "*",  "/",  "%",  "^",  "?",
-                                                            "<",  ">", "==", "!=", "<=", ">=", "&&",
-                                                            "||", ".", "[",  "(",  "!"};
-  if (t.kind != TokenKind::Symbol) return false;
-  for (std::string_view op : kOps) {
-    if (op == t.text) return true;
-  }
-  return false;
-}
-
 class Reader {
  public:
-  Reader(const std::vector<Token>& tokens, std::pmr::memory_resource* memory)
-      : tokens_(tokens), memory_(memory) {}
+  Reader(const std::vector<Token>& tokens, std::pmr::memory_resource* memory, double t)
+      : tokens_(tokens), memory_(memory), t_(t) {}
 
   std::pmr::vector<Call> file(Loc* end) {
     std::pmr::vector<Call> calls(memory_);
@@ -78,8 +73,8 @@ class Reader {
     Nesting(Reader& reader, const Token& opener) : reader_(reader) {
       if (++reader_.depth_ > kMaxNestingDepth) {
         reader_.fail(opener, fmt::format("nesting deeper than {} levels is not supported (calls' "
-                                         "children, {{ }} blocks and [ ] vectors inside one "
-                                         "another)",
+                                         "children, {{ }} blocks, [ ] vectors and the ( ), ? "
+                                         "and ^ of expressions inside one another)",
                                          kMaxNestingDepth));
       }
     }
@@ -211,7 +206,7 @@ class Reader {
         name_loc = name_token.loc;
         take();  // '='
       }
-      call.args.push_back(Argument{name, name_loc, value()});
+      call.args.push_back(Argument{name, name_loc, argument_value()});
       if (at_symbol(",")) {
         take();
       } else if (!at_symbol(")")) {
@@ -224,12 +219,6 @@ class Reader {
   // Something other than the expected separator follows a complete value.
   [[noreturn, gnu::noinline]] void after_value(std::string_view closer) {
     const Token& t = peek();
-    if (is_operator(t)) {
-      fail(t, fmt::format("expressions are not supported (found operator '{}' after a value); "
-                          "write every argument as a literal number, string, vector, true, "
-                          "false or undef",
-                          t.text));
-    }
     if (closer == "]" && at_symbol(":")) {
       fail(t, "ranges [start:step:end] are not supported; write the vector out");
     }
@@ -239,40 +228,270 @@ class Reader {
     fail(t, fmt::format("expected ',' or '{}', got {}", closer, describe(t)));
   }
 
-  // value := number | '-' number | string | true | false | undef | '[' values ']'
-  Value value() {
+  // An argument: an expression whose value, and every number in it, is finite.
+  Value argument_value() {
+    Value v = expression();
+    check_finite(v);
+    return v;
+  }
+
+  void check_finite(const Value& v) const {
+    if (v.kind == Value::Kind::Number && !std::isfinite(v.number)) refuse_not_finite(v);
+    for (const Value& e : v.items) check_finite(e);
+  }
+
+  [[noreturn, gnu::noinline]] static void refuse_not_finite(const Value& v) {
+    throw SceneError(v.loc, fmt::format("the expression gives {}, not a finite number; every number "
+                                        "must be finite",
+                                        std::isnan(v.number) ? "nan" : v.number > 0 ? "inf" : "-inf"));
+  }
+
+  // Expressions are evaluated as they are read, with $t given. The parts
+  // OpenSCAD would not evaluate (the branch of `? :` not taken, the right
+  // side of `&&` or `||` that does not decide) are read in a dead stretch:
+  // checked for syntax, names and argument counts, not evaluated, so that
+  // `$t > 0 ? 1 / $t : 0` works as it does in OpenSCAD.
+  bool live() const { return dead_ == 0; }
+  class DeadIf {
+   public:
+    DeadIf(Reader& reader, bool dead) : reader_(reader), dead_(dead) { reader_.dead_ += dead_; }
+    ~DeadIf() { reader_.dead_ -= dead_; }
+    DeadIf(const DeadIf&) = delete;
+    DeadIf& operator=(const DeadIf&) = delete;
+
+   private:
+    Reader& reader_;
+    int dead_;
+  };
+
+  // The expression reader recurses a few frames per level of nesting (a
+  // '(' or '[' or a function's arguments, a '?' or a '^'), so, as for calls,
+  // its recursive functions keep their frames small: each builds its result
+  // in place (the value it returns), and the work with more locals (a right
+  // operand, the branches of '? :', a message) is done in helpers kept out of
+  // line.
+
+  // expression := binary(1) ['?' expression ':' expression]
+  Value expression() {
+    Value v = binary(1);
+    if (at_symbol("?")) choose(v);
+    return v;
+  }
+
+  // After the condition `v` of '? :': replaces it with the branch taken.
+  [[gnu::noinline]] void choose(Value& v) {
+    const Token& question = peek();
+    Nesting level(*this, question);
+    take();
+    const bool taken = live() && truthy(v);
+    const Loc loc = v.loc;
+    {
+      DeadIf dead(*this, !taken);
+      Value yes = expression();
+      if (taken) v = std::move(yes);
+    }
+    if (!at_symbol(":")) refuse_missing_colon(question);
+    take();
+    {
+      DeadIf dead(*this, taken);
+      Value no = expression();
+      if (!taken) v = std::move(no);
+    }
+    v.loc = loc;
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_missing_colon(const Token& question) const {
+    fail(peek(), fmt::format("expected ':' of the '?' at {}:{}, got {}", question.loc.line,
+                             question.loc.col, describe(peek())));
+  }
+
+  // The binary operator at pos_ and its precedence (OpenSCAD's parser.y:
+  // || < && < == != < comparisons < + - < * / %), or level 0 if none.
+  struct BinaryAt {
+    int level = 0;
+    BinaryOp op = BinaryOp::Plus;
+  };
+  BinaryAt binary_at() const {
     const Token& t = peek();
-    Value v(memory_, t.loc);
+    if (t.kind != TokenKind::Symbol) return {};
+    // Most values of a scene are followed by ',', ')' or ']': one switch
+    // on the first character settles those.
+    const bool two = t.text.size() == 2;
+    switch (t.text[0]) {
+      case '|': return two ? BinaryAt{1, BinaryOp::Or} : BinaryAt{};
+      case '&': return two ? BinaryAt{2, BinaryOp::And} : BinaryAt{};
+      case '=': return two ? BinaryAt{3, BinaryOp::Equal} : BinaryAt{};
+      case '!': return two ? BinaryAt{3, BinaryOp::NotEqual} : BinaryAt{};
+      case '<': return {4, two ? BinaryOp::LessEqual : BinaryOp::Less};
+      case '>': return {4, two ? BinaryOp::GreaterEqual : BinaryOp::Greater};
+      case '+': return {5, BinaryOp::Plus};
+      case '-': return {5, BinaryOp::Minus};
+      case '*': return {6, BinaryOp::Times};
+      case '/': return {6, BinaryOp::Divide};
+      case '%': return {6, BinaryOp::Modulo};
+      default: return {};
+    }
+  }
+
+  // Operators of `min_level` and tighter, left-associative. The recursion for
+  // a right operand goes at most one frame per level, however long the chain.
+  Value binary(int min_level) {
+    Value lhs = unary();
+    for (BinaryAt at = binary_at(); at.level >= min_level && at.level > 0; at = binary_at()) {
+      apply_operator(lhs, at);
+    }
+    return lhs;
+  }
+
+  // Reads the operator `at` at pos_ and its right operand, and applies it to lhs.
+  [[gnu::noinline]] void apply_operator(Value& lhs, BinaryAt at) {
+    const Token& op = take();
+    // || and && skip their right side when the left decides.
+    const bool decided = live() && ((at.op == BinaryOp::Or && truthy(lhs)) ||
+                                    (at.op == BinaryOp::And && !truthy(lhs)));
+    DeadIf dead(*this, decided);
+    Value rhs = binary(at.level + 1);
+    if (decided) {
+      set_bool(lhs, at.op == BinaryOp::Or);
+    } else if (!live()) {
+      return;
+    } else if (at.op == BinaryOp::Or || at.op == BinaryOp::And) {
+      set_bool(lhs, truthy(rhs));  // the left did not decide: the right does
+    } else {
+      lhs = apply_binary(at.op, lhs, rhs, op, memory_);
+    }
+  }
+
+  static void set_bool(Value& v, bool b) {
+    v.kind = Value::Kind::Bool;
+    v.boolean = b;
+    v.items.clear();
+  }
+
+  // unary := {'+' | '-' | '!'} exponent, the operators applied right to left
+  // (a loop: a long run of signs costs no stack).
+  Value unary() {
+    const size_t first = pos_;
+    while (at_symbol("-") || at_symbol("+") || at_symbol("!")) {
+      if (at_symbol("-") && peek(1).kind == TokenKind::Identifier &&
+          (peek(1).text == "inf" || peek(1).text == "nan")) {
+        refuse_negative_infinity();
+      }
+      take();
+    }
+    const size_t last = pos_;
+    Value v = exponent();
+    if (last != first && live()) apply_signs(v, first, last);
+    return v;
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_negative_infinity() const {
+    fail(peek(), fmt::format("'-{}' is not a finite number; every number must be finite",
+                             peek(1).text));
+  }
+
+  // Applies the signs tokens_[first, last) to v, the last one first.
+  [[gnu::noinline]] void apply_signs(Value& v, size_t first, size_t last) {
+    for (size_t i = last; i-- > first;) {
+      const Token& op = tokens_[i];
+      if (op.text == "-") {
+        v = negate(v, op, memory_);
+      } else if (op.text == "!") {
+        set_bool(v, !truthy(v));
+      }
+      v.loc = op.loc;
+    }
+  }
+
+  // exponent := primary ['^' unary]: right-associative, and tighter than a
+  // sign on its left (-2^2 is -4), as in OpenSCAD. What OpenSCAD allows after
+  // a primary but scene files do not is refused here.
+  Value exponent() {
+    Value base = primary();
+    if (at_symbol("^")) {
+      raise(base);
+    } else if (at_symbol("[") || at_symbol(".") || at_symbol("(")) {
+      refuse_postfix();
+    }
+    return base;
+  }
+
+  [[gnu::noinline]] void raise(Value& base) {
+    Nesting level(*this, peek());
+    const Token& op = take();
+    Value power = unary();
+    if (live()) base = apply_binary(BinaryOp::Power, base, power, op, memory_);
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_postfix() const {
+    if (at_symbol("[")) {
+      fail(peek(), "indexing a value ('[...]' after it) is not supported in scene files");
+    }
+    if (at_symbol(".")) {
+      fail(peek(), "member access ('.x', '.y', '.z') is not supported in scene files");
+    }
+    fail(peek(), "only the built-in functions can be called, by name");
+  }
+
+  // primary := number | string | name | name '(' args ')' | '(' expression ')'
+  //          | '[' [expression {',' expression} [',']] ']'
+  Value primary() {
+    const Token& t = peek();
     switch (t.kind) {
-      case TokenKind::Number:
+      case TokenKind::Number: {
         take();
+        Value v(memory_, t.loc);
         v.kind = Value::Kind::Number;
         v.number = t.number;
         return v;
-      case TokenKind::String:
-        take();
-        v.kind = Value::Kind::String;
-        v.string = string_value(t.text);
-        return v;
+      }
+      case TokenKind::String: return string_literal();
       case TokenKind::Identifier: return identifier_value();
-      case TokenKind::End: fail(t, "expected a value, got end of file");
+      case TokenKind::End: refuse_value();
       case TokenKind::Symbol: break;
     }
-    if (t.text == "-" && peek(1).kind == TokenKind::Number) {
-      take();
-      const Token& n = take();
-      v.kind = Value::Kind::Number;
-      v.number = -n.number;
-      return v;
-    }
+    if (t.text == "(") return group();
     if (t.text != "[") refuse_value();
+    return vector_value();
+  }
+
+  [[gnu::noinline]] Value string_literal() {
+    const Token& t = take();
+    Value v(memory_, t.loc);
+    v.kind = Value::Kind::String;
+    v.string = string_value(t.text);
+    return v;
+  }
+
+  // '(' expression ')'
+  [[gnu::noinline]] Value group() {
+    const Token& open = peek();
+    Nesting level(*this, open);
+    take();
+    Value inner = expression();
+    if (!at_symbol(")")) refuse_unclosed_group(open);
+    take();
+    inner.loc = open.loc;
+    return inner;
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_unclosed_group(const Token& open) const {
+    if (peek().kind == TokenKind::End) refuse_unclosed(open, '(', ')');
+    fail(peek(), fmt::format("expected ')' closing the '(' at {}:{}, got {}", open.loc.line,
+                             open.loc.col, describe(peek())));
+  }
+
+  // '[' [expression {',' expression} [',']] ']'
+  [[gnu::noinline]] Value vector_value() {
+    const Token& t = peek();
     Nesting level(*this, t);
     take();
+    Value v(memory_, t.loc);
     v.kind = Value::Kind::Vector;
     size_t first = pending_items_.size();
     while (!at_symbol("]")) {
       if (peek().kind == TokenKind::End) refuse_unclosed(t, '[', ']');
-      pending_items_.push_back(value());
+      pending_items_.push_back(expression());
       if (at_symbol(",")) {
         take();
       } else if (!at_symbol("]")) {
@@ -284,20 +503,10 @@ class Reader {
     return v;
   }
 
-  // Why the symbol at pos_ does not start a value.
+  // Why the token at pos_ does not start a value.
   [[noreturn, gnu::noinline]] void refuse_value() const {
-    const Token& t = peek();
-    if (t.text == "-" && peek(1).kind == TokenKind::Identifier &&
-        (peek(1).text == "inf" || peek(1).text == "nan")) {
-      fail(t,
-           fmt::format("'-{}' is not a finite number; every number must be finite", peek(1).text));
-    }
-    if (t.text == "-" || t.text == "+" || t.text == "!" || t.text == "(") {
-      fail(t, fmt::format("expressions are not supported (found '{}'); write every argument as "
-                          "a literal number, string, vector, true, false or undef",
-                          t.text));
-    }
-    fail(t, fmt::format("expected a value, got {}", describe(t)));
+    if (peek().kind == TokenKind::End) fail(peek(), "expected a value, got end of file");
+    fail(peek(), fmt::format("expected a value, got {}", describe(peek())));
   }
 
   // The value of a string written as `raw`: a view of the scene text itself
@@ -317,7 +526,8 @@ class Reader {
     pending_items_.erase(begin, pending_items_.end());
   }
 
-  Value identifier_value() {
+  // true, false, undef, $t, PI or a call of a built-in function.
+  [[gnu::noinline]] Value identifier_value() {
     const Token& t = take();
     Value v(memory_, t.loc);
     if (t.text == "true" || t.text == "false") {
@@ -329,23 +539,94 @@ class Reader {
       v.kind = Value::Kind::Undef;
       return v;
     }
+    if (is_language_keyword(t.text)) refuse_name(t);
+    if (at_symbol("(")) return function_call(t);
+    if (t.text == "$t" || t.text == "PI") {
+      v.kind = Value::Kind::Number;
+      v.number = t.text == "$t" ? t_ : kPi;
+      return v;
+    }
+    refuse_name(t);
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_name(const Token& t) const {
     if (t.text == "inf" || t.text == "nan") {
       fail(t, fmt::format("'{}' is not a finite number; every number must be finite", t.text));
     }
-    if (at_symbol("(")) {
-      fail(t, fmt::format("function calls are not supported ('{}(...)'); write the value as a "
-                          "literal number, string, vector, true, false or undef",
-                          t.text));
+    if (is_language_keyword(t.text)) {
+      fail(t, fmt::format("'{}' is not supported in scene-file expressions", t.text));
     }
-    fail(t, fmt::format("variables are not supported ('{}'); write the value as a literal "
-                        "number, string, vector, true, false or undef",
+    fail(t, fmt::format("unknown variable '{}': expressions may use only $t (the animation time) "
+                        "and PI",
                         t.text));
+  }
+
+  // name '(' [expression {',' expression}] ')', after the name.
+  [[gnu::noinline]] Value function_call(const Token& name) {
+    const Arity arity = function_arity(name.text);
+    if (!arity.known()) refuse_function(name);
+    Nesting level(*this, peek());
+    const Token& open = take();  // '('
+    const size_t first = pending_items_.size();
+    while (!at_symbol(")")) {
+      if (peek().kind == TokenKind::End) refuse_unclosed(open, '(', ')');
+      if (peek().kind == TokenKind::Identifier && at_symbol("=", 1)) refuse_named_argument(name);
+      pending_items_.push_back(expression());
+      if (at_symbol(",")) {
+        take();
+      } else if (!at_symbol(")")) {
+        after_value(")");
+      }
+    }
+    take();
+    const size_t count = pending_items_.size() - first;
+    if (static_cast<int>(count) < arity.min || (arity.max >= 0 && static_cast<int>(count) > arity.max)) {
+      refuse_argument_count(name, arity, count);
+    }
+    Value result(memory_, name.loc);
+    if (live()) {
+      result = call_function(name, std::span<const Value>(pending_items_).subspan(first), memory_);
+    }
+    pending_items_.erase(pending_items_.begin() + static_cast<std::ptrdiff_t>(first),
+                         pending_items_.end());
+    return result;
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_named_argument(const Token& name) const {
+    fail(peek(), fmt::format("named arguments are not supported in function calls ('{} = ...' in "
+                             "{}())",
+                             peek().text, name.text));
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_function(const Token& name) const {
+    std::vector<std::string> known;
+    for (std::string_view n : {"sin", "cos", "tan", "asin", "acos", "atan", "atan2", "abs", "sign",
+                               "sqrt", "pow", "exp", "ln", "log", "min", "max", "floor", "ceil",
+                               "round", "lookup"}) {
+      known.emplace_back(n);
+    }
+    const std::string guess = closest_name(name.text, known);
+    fail(name, fmt::format("unknown function '{}'{}; supported: {}", name.text,
+                           guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess),
+                           function_names()));
+  }
+
+  [[noreturn, gnu::noinline]] void refuse_argument_count(const Token& name, Arity arity,
+                                                         size_t count) const {
+    const std::string takes =
+        arity.max < 0         ? fmt::format("at least {}", arity.min)
+        : arity.min == arity.max ? fmt::format("{}", arity.min)
+                                 : fmt::format("{} or {}", arity.min, arity.max);
+    fail(name, fmt::format("{}() takes {} argument{}, got {}", name.text, takes,
+                           takes == "1" ? "" : "s", count));
   }
 
   const std::vector<Token>& tokens_;
   std::pmr::memory_resource* memory_;
+  double t_;  // the value of $t
   size_t pos_ = 0;
   int depth_ = 0;  // levels of nesting open at pos_
+  int dead_ = 0;   // dead stretches open at pos_ (see live())
   // The items of the vectors being read, innermost last. Collecting them here
   // rather than growing each vector's own list gives every vector a single
   // allocation of its final size (a monotonic resource never reuses what a
@@ -356,8 +637,8 @@ class Reader {
 }  // namespace
 
 std::pmr::vector<Call> read_calls(const std::vector<Token>& tokens,
-                                  std::pmr::memory_resource* memory, Loc* end) {
-  return Reader(tokens, memory).file(end);
+                                  std::pmr::memory_resource* memory, Loc* end, double t) {
+  return Reader(tokens, memory, t).file(end);
 }
 
 }  // namespace capsim::scene_file

@@ -1,9 +1,10 @@
 #pragma once
 // Reads tokens into the shape every scene file has: a list of module calls
 // `name(args) child`, each with its modifiers (`% # ! *`), arguments and
-// children. Only literal values are allowed as arguments; OpenSCAD's language
-// beyond its CSG export (variables, expressions, loops, modules, include) is
-// refused here with its location. What the calls mean is decided in parser.cpp.
+// children. Arguments are OpenSCAD expressions over $t, evaluated as they are
+// read (scene_expression.h gives their meaning); OpenSCAD's language beyond
+// that (variables, assignments, loops, modules, include) is refused here with
+// its location. What the calls mean is decided in parser.cpp.
 
 #include <memory_resource>
 #include <string>
@@ -24,7 +25,7 @@ namespace capsim::scene_file {
 // take that resource so that no list is ever made without it (moving a list
 // into one made from another resource would copy it element by element).
 
-// A literal argument value. `undef` is kept as its own kind: it means "not given".
+// An argument's value, evaluated. `undef` is kept as its own kind: it means "not given".
 struct Value {
   enum class Kind { Undef, Bool, Number, String, Vector };
   Value(std::pmr::memory_resource* memory, Loc where) : items(memory), loc(where) {}
@@ -64,18 +65,22 @@ struct Call {
   bool has_body = false;  // false for `name(...);`
 };
 
-// How deep calls, bare blocks and vectors may nest inside one another: each
-// call's children, each bare `{ }` block and each `[ ]` is one level. Every
+// How deep calls, bare blocks and expressions may nest inside one another:
+// each call's children, each bare `{ }` block, each `[ ]`, each `( )` (of a
+// group or a function call), each `?` and each `^` is one level. Every
 // stage that walks the tree (this reader, the interpreter, the status tree)
 // recurses once or a few times per level, so the limit bounds their stack
 // use; docs/scene-format.md gives the figures.
 inline constexpr int kMaxNestingDepth = 1000;
 
 // The top-level calls of a file in order, their lists drawn from `memory`, which
-// must outlive them. `end` receives the End token's location (for errors about
-// the file as a whole). Throws SceneError on any syntax outside the supported
-// subset, and on nesting deeper than kMaxNestingDepth.
+// must outlive them, their arguments evaluated with $t = t. `end` receives the
+// End token's location (for errors about the file as a whole). Throws
+// SceneError on any syntax outside the supported subset, on every expression
+// OpenSCAD would not evaluate to a value (a wrong type or argument count) or
+// that gives a number that is not finite, and on nesting deeper than
+// kMaxNestingDepth.
 std::pmr::vector<Call> read_calls(const std::vector<Token>& tokens,
-                                  std::pmr::memory_resource* memory, Loc* end);
+                                  std::pmr::memory_resource* memory, Loc* end, double t = 0);
 
 }  // namespace capsim::scene_file
