@@ -2,14 +2,18 @@
 // file URL, the page's script runs, and the DOM it leaves shows that the
 // player, the heat map, the table, the timeline and (for a sequence with
 // antialiasing) the per-frame chart and the link map were built from the run's
-// numbers; a screenshot is taken. Two browser launches in all. Skipped where
-// Chromium is not installed (Debian package chromium; .ci/run installs it).
+// numbers; a screenshot is taken. The mode-comparison page of `capsim bench
+// modes --html` likewise: its script sorts the table of runs. Three browser
+// launches in all. Skipped where Chromium is not installed (Debian package
+// chromium; .ci/run installs it).
 
 #include "cli_run.h"
 #include "html_page.h"
 
 #include "html_report.h"
 #include "machine.h"
+#include "modes_bench.h"
+#include "modes_page.h"
 #include "sequence_builders.h"
 #include "sim_report.h"
 
@@ -241,6 +245,46 @@ TEST(HtmlReportInBrowser, SequenceWithAntialiasingGetsItsFramesChartLinkMapAndFr
   EXPECT_EQ(number(links, "links"), r.links.size());
   EXPECT_EQ(number(links, "bytes"), link_totals(r).bytes);
   EXPECT_GT(r.links.size(), 0u);
+}
+
+TEST(ModesPageInBrowser, ScriptSortsTheTableOfRunsByTheColumnNamed) {
+  const std::string chromium = find_chromium();
+  SKIP_WITHOUT_CHROMIUM(chromium);
+  TempDir dir;
+  ModesBenchOptions options;
+  options.width = options.height = 16;
+  options.scenes_dir = std::string(CAPSIM_SOURCE_DIR) + "/scenes";
+  const ModesBench bench = run_modes_bench(options);
+  write(dir / "modes.html", modes_page(bench, {"bench/baselines/modes-16x16.json", false, true, "", {}}, "0.1.0"));
+  const std::string dom = dump_dom(chromium, dir, dir / "modes.html", "#sort=-d");
+
+  const std::size_t root = dom.find("<html");
+  const std::string html_tag = dom.substr(root, dom.find('>', root) - root);
+  EXPECT_NE(html_tag.find("data-built=\"table\""), std::string::npos) << html_tag;
+
+  // Sorted by d, most first, ties in the page's order: the rows' positions
+  // as written.
+  const auto table = data_attributes(dom, "runs-table");
+  EXPECT_EQ(number(table, "rows"), bench.runs.size());
+  EXPECT_EQ(table.at("sort-key"), "d");
+  EXPECT_EQ(table.at("sort-order"), "descending");
+  std::vector<std::size_t> index(bench.runs.size());
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
+  std::stable_sort(index.begin(), index.end(), [&](std::size_t a, std::size_t b) {
+    return bench.runs[a].figures.spread.deviation_percent > bench.runs[b].figures.spread.deviation_percent;
+  });
+  std::string order;
+  for (const std::size_t i : index) order += (order.empty() ? "" : " ") + std::to_string(i);
+  EXPECT_EQ(table.at("order"), order);
+  ASSERT_NE(index[0], 0u) << "the sort must move rows for the test to tell";
+  // The rows themselves moved: the first in the DOM is the run with the largest d.
+  const std::size_t body = dom.find("<tbody>", dom.find("id=\"runs-table\""));
+  const std::size_t first = dom.find("<tr ", body);
+  const std::string row = dom.substr(first, dom.find("</tr>", first) - first);
+  EXPECT_NE(row.find(fmt::format("data-index=\"{}\"", index[0])), std::string::npos) << row;
+  EXPECT_NE(row.find(fmt::format("{:.2f}</td>", bench.runs[index[0]].figures.spread.deviation_percent)),
+            std::string::npos)
+      << row;
 }
 
 }  // namespace

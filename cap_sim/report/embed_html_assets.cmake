@@ -1,11 +1,13 @@
-# Writes a C++ source holding the HTML report's own files (cap_sim/report/html/: the
-# page template, its styles and its script), so the capsim binary needs no data
+# Writes a C++ source holding the HTML pages' own files (cap_sim/report/html/: the
+# page template, the run report's styles and script, and the mode-comparison
+# page's additions), so the capsim binary needs no data
 # files at run time and the page nothing beside it.
 #   cmake -DASSET_DIR=<dir> -DOUTPUT=<file.cpp> -P embed_html_assets.cmake
 # The files go inside <style> and <script> elements: the build fails if one
 # could end its element early.
 set(members "")
-foreach(pair "page;report.html" "style;report.css" "script;report.js")
+foreach(pair "page;report.html" "style;report.css" "script;report.js" "modes_style;modes.css"
+             "modes_script;modes.js")
   list(GET pair 0 member)
   list(GET pair 1 name)
   file(READ "${ASSET_DIR}/${name}" text)

@@ -1,7 +1,9 @@
 #pragma once
-// The HTML report's own files, compiled into the binary from cap_sim/report/html/ by
-// cap_sim/report/embed_html_assets.cmake: the page template (report.html), its styles
-// (report.css) and its script (report.js).
+// The HTML pages' own files, compiled into the binary from cap_sim/report/html/ by
+// cap_sim/report/embed_html_assets.cmake: the page template (report.html), the
+// run report's styles (report.css) and script (report.js), and what the
+// mode-comparison page of `capsim bench modes` adds to those styles
+// (modes.css) and runs instead of that script (modes.js).
 
 #include <string_view>
 
@@ -11,6 +13,8 @@ struct HtmlAssets {
   std::string_view page;    // with the placeholders html_report fills
   std::string_view style;   // goes inside <style>
   std::string_view script;  // goes inside <script>
+  std::string_view modes_style;   // after style, on the mode-comparison page
+  std::string_view modes_script;  // that page's <script>
 };
 
 const HtmlAssets& html_assets();

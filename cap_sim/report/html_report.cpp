@@ -18,16 +18,6 @@ namespace capsim::sim {
 
 namespace {
 
-// 1234567 -> "1,234,567".
-std::string grouped(std::uint64_t n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
 // A table cell in seconds with the exact cycles on hover.
 std::string seconds_cell(Cycles c, std::uint64_t hz) {
   return fmt::format("<td title=\"{} cycles\">{:.3f}</td>", grouped(c.count()), c.seconds(hz));
@@ -356,23 +346,6 @@ std::string data_block(const char* id, std::string_view json) {
   return fmt::format("<script type=\"application/json\" id=\"{}\">{}</script>\n", id, script_safe_json(json));
 }
 
-// The template with each placeholder replaced once; what is put in is not
-// searched again.
-std::string fill(std::string_view page, const std::vector<std::pair<std::string_view, std::string_view>>& parts) {
-  std::string out;
-  std::size_t at = 0;
-  for (const auto& [placeholder, text] : parts) {
-    const std::size_t hit = page.find(placeholder, at);
-    if (hit == std::string_view::npos)
-      throw std::logic_error(fmt::format("the report template lacks {}", placeholder));
-    out.append(page.substr(at, hit - at));
-    out.append(text);
-    at = hit + placeholder.size();
-  }
-  out.append(page.substr(at));
-  return out;
-}
-
 }  // namespace
 
 std::string html_report(const SimulationResult& r, const RunFacts& facts) {
@@ -396,7 +369,7 @@ std::string html_report(const SimulationResult& r, const RunFacts& facts) {
                                         to_string(r.config.cells), to_string(r.config.mode));
   const HtmlAssets& assets = html_assets();
   const std::string escaped_title = html_escape(title);
-  return fill(assets.page,
+  return fill_template(assets.page,
               {{"@TITLE@", escaped_title}, {"@STYLE@", assets.style}, {"@BODY@", body}, {"@SCRIPT@", assets.script}});
 }
 

@@ -6,6 +6,31 @@
 
 namespace capsim::sim {
 
+std::string grouped(std::uint64_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+std::string fill_template(std::string_view page,
+                          const std::vector<std::pair<std::string_view, std::string_view>>& parts) {
+  std::string out;
+  std::size_t at = 0;
+  for (const auto& [placeholder, text] : parts) {
+    const std::size_t hit = page.find(placeholder, at);
+    if (hit == std::string_view::npos)
+      throw std::logic_error(fmt::format("the page template lacks {}", placeholder));
+    out.append(page.substr(at, hit - at));
+    out.append(text);
+    at = hit + placeholder.size();
+  }
+  out.append(page.substr(at));
+  return out;
+}
+
 std::string html_escape(std::string_view text) {
   std::string out;
   out.reserve(text.size());

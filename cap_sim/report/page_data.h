@@ -9,9 +9,19 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace capsim::sim {
+
+// 1234567 -> "1,234,567".
+std::string grouped(std::uint64_t n);
+
+// The page template (html_assets().page) with each placeholder, in the order
+// given, replaced once by its text; what is put in is not searched again.
+// Throws std::logic_error if the template lacks one.
+std::string fill_template(std::string_view page,
+                          const std::vector<std::pair<std::string_view, std::string_view>>& parts);
 
 // Text for HTML element content or a quoted attribute value: & < > " ' escaped.
 std::string html_escape(std::string_view text);

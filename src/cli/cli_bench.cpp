@@ -7,6 +7,7 @@
 #include "cli_outputs.h"
 #include "cli_usage.h"
 #include "modes_bench.h"
+#include "modes_page.h"
 #include "text_output.h"
 
 #include <fmt/core.h>
@@ -29,6 +30,7 @@ struct BenchOptions {
   std::string baseline;  // default: bench/baselines/modes[-WxH].json
   std::string json;
   std::string plot;
+  std::string html;
   bool update = false;
   std::string threads = "0";
 };
@@ -63,28 +65,44 @@ int run_modes(const BenchOptions& o) {
   const nlohmann::json old = have_baseline ? read_json(baseline) : nlohmann::json();
   // The baseline is read above and replaced, when --update asks, only once
   // the whole run is done.
-  StagedOutputs outputs({{"--json", o.json}, {"--plot", o.plot}, {"--baseline", o.update ? baseline : std::string()}},
+  StagedOutputs outputs({{"--json", o.json},
+                         {"--plot", o.plot},
+                         {"--html", o.html},
+                         {"--baseline", o.update ? baseline : std::string()}},
                         have_baseline && !o.update ? std::vector<std::string>{baseline} : std::vector<std::string>{});
 
   options.log = [](const std::string& run) { fmt::print(stderr, "{}\n", run); };
   const sim::ModesBench bench = sim::run_modes_bench(options);
   const nlohmann::json now = sim::modes_bench_json(bench);
   fmt::print("{}\n", sim::modes_bench_table(bench));
+  // The comparison comes before any output is written, for the page to say
+  // how it went; a baseline that is not comparable fails the command only
+  // after the outputs are in place, as a moved figure does.
+  sim::BaselineOutcome outcome;
+  outcome.path = baseline;
+  outcome.rewritten = o.update;
+  outcome.existed = have_baseline;
+  if (have_baseline) {
+    try {
+      outcome.moved = sim::compare_modes_bench(old, now);
+    } catch (const std::runtime_error& e) {
+      outcome.not_comparable = e.what();
+    }
+  }
   if (!o.json.empty()) sim::write_text_file(outputs["--json"], now.dump(2) + "\n");
   if (!o.plot.empty()) sim::write_text_file(outputs["--plot"], sim::modes_bench_svg(bench));
+  if (!o.html.empty()) sim::write_text_file(outputs["--html"], sim::modes_page(bench, outcome, CAPSIM_VERSION));
   if (o.update) sim::write_text_file(outputs["--baseline"], now.dump(2) + "\n");
   outputs.commit();
 
+  const std::vector<sim::MovedFigure>& moved = outcome.moved;
   if (o.update) {
     if (!have_baseline) {
       fmt::print("{}: written ({} runs)\n", baseline, bench.runs.size());
       return 0;
     }
-    std::vector<sim::MovedFigure> moved;
-    try {
-      moved = sim::compare_modes_bench(old, now);
-    } catch (const std::runtime_error& e) {
-      fmt::print("{}: rewritten; the old one was not comparable: {}\n", baseline, e.what());
+    if (!outcome.not_comparable.empty()) {
+      fmt::print("{}: rewritten; the old one was not comparable: {}\n", baseline, outcome.not_comparable);
       return 0;
     }
     if (moved.empty()) {
@@ -94,7 +112,7 @@ int run_modes(const BenchOptions& o) {
     }
     return 0;
   }
-  const std::vector<sim::MovedFigure> moved = sim::compare_modes_bench(old, now);
+  if (!outcome.not_comparable.empty()) throw std::runtime_error(outcome.not_comparable);
   if (moved.empty()) {
     fmt::print("{}: all {} runs identical to the baseline\n", baseline, bench.runs.size());
     return 0;
@@ -123,6 +141,9 @@ Command add_bench_command(CLI::App& app) {
   modes->add_flag("--update", o->update, "Rewrite the baseline with this run and print what moved");
   modes->add_option("--json", o->json, "Also write the results as JSON to this file");
   modes->add_option("--plot", o->plot, "Also write a plot (.svg): d and speed-up against the cell count");
+  modes->add_option("--html", o->html,
+                    "Also write one self-contained HTML page comparing the modes: the baseline's verdict, plots of "
+                    "d and speed-up per model, and a sortable table of every run");
   modes->add_option("--threads", o->threads, "Host threads (0 = all); the figures do not depend on it")
       ->default_val("0");
   return [o, modes] {
