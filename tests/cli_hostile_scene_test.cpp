@@ -84,10 +84,18 @@ TEST(CliHostileScene, DeepNestingIsRefusedOrRendered) {
   EXPECT_TRUE(std::filesystem::exists(dir / "limit.png"));
 }
 
+// The stack docs/scene-format.md promises a 1000-level scene renders in: 1 MiB,
+// or 4 MiB in an AddressSanitizer build.
+#ifdef CAPSIM_SANITIZED
+const char* const kStackLimit = "ulimit -s 4096;";
+#else
+const char* const kStackLimit = "ulimit -s 1024;";
+#endif
+
 // Expressions nest within the same limit: 1000 levels of each kind that
 // recurses ('(', a function's arguments, '? :', '^', and a '(' after each
-// operator) render within 1 MiB of stack, as docs/scene-format.md states;
-// 1001 are refused where the last level opens.
+// operator) render within the documented stack (kStackLimit); 1001 are
+// refused where the last level opens.
 TEST(CliHostileScene, DeepExpressionsAreRefusedOrRendered) {
   TempDir dir;
   const struct {
@@ -101,7 +109,7 @@ TEST(CliHostileScene, DeepExpressionsAreRefusedOrRendered) {
     const std::string ok = write_scene(dir, k.name + ".csg", "sphere(r = " + repeated(k.open, 1000) + "1" +
                                                                  repeated(k.close, 1000) + "+1);");
     const RunResult r =
-        run_capsim("render " + ok + " -o " + (dir / (k.name + ".png")) + " --size 8x8", dir, "ulimit -s 1024;");
+        run_capsim("render " + ok + " -o " + (dir / (k.name + ".png")) + " --size 8x8", dir, kStackLimit);
     EXPECT_EQ(r.status, 0) << k.name << ": " << r.err;
     const std::string deep = write_scene(dir, k.name + "_deep.csg", "sphere(r = " + repeated(k.open, 1001) + "1" +
                                                                         repeated(k.close, 1001) + ");");
