@@ -70,17 +70,21 @@ TEST(MemoryEstimate, SimulateHoldsWhatEachScreenFormatNeedsPerPixel) {
   config.screen = sim::ScreenFormat::Float;
   EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * 61);
   // Antialiased: also samples per pixel (4 + 4), one frame's corners (24 and
-  // 8 for their cycles), and per pixel of every frame the exchange plan and
-  // the corners taken in (3 x 16).
+  // 8 for their cycles) and the running unit's exchange plan (3 x 12 a pixel
+  // of its frames).
   config.aa.depth = 2;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * (69 + 3 * 16) + 641u * 481 * 32);
-  // Sixty-four frames, barrier or frame averaged: every frame's plan is made
-  // before the run.
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * (69 + 3 * 12) + 641u * 481 * 32);
+  // Sixty-four frames with a barrier per frame: one frame's plan at a time.
   config.screen = sim::ScreenFormat::Srgb8;
-  const std::uint64_t sequence = 640u * 480 * (64 * (6 + 3 * 16) + 1) + 641u * 481 * 24;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), sequence);
+  const std::uint64_t per_frame = 640u * 480 * (64 * 6 + 1) + 641u * 481 * 24;
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), per_frame + 640u * 480 * 3 * 12);
+  // Frame averaged on 8x8 cells: a unit is 64 frames, planned at once.
   config.frame_average = true;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), sequence);
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), per_frame + 64 * 640u * 480 * 3 * 12);
+  // Keeping every corner taken in, for tests: 3 x 4 a pixel of every frame.
+  config.keep_received_corners = true;
+  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64),
+            per_frame + 64 * 640u * 480 * 3 * 12 + 64 * 640u * 480 * 3 * 4);
 }
 
 }  // namespace

@@ -67,7 +67,12 @@ TEST(SimAntialias, ExchangeDeliversExactlyTheCornersEachCellNeeds) {
       for (LinkTopology topology : {LinkTopology::Mesh, LinkTopology::Torus}) {
         const std::string where =
             std::string(to_string(mode)) + " " + to_string(grid) + " " + to_string(topology);
-        const SimulationResult r = simulate_frame(tracer, config_of(grid, mode, 1, topology), 2, false);
+        MachineConfig config = config_of(grid, mode, 1, topology);
+        config.keep_received_corners = true;
+        const SimulationResult r = simulate_frame(tracer, config, 2, false);
+        // Without the list a run keeps only the counts, and they agree.
+        config.keep_received_corners = false;
+        const SimulationResult counted = simulate_frame(tracer, config, 2, false);
         const WindowLayout layout(mode, grid, 13, 11);
         const CornerExchange plan(layout);
         for (const CellReport& c : r.cells) {
@@ -78,9 +83,14 @@ TEST(SimAntialias, ExchangeDeliversExactlyTheCornersEachCellNeeds) {
               if (plan.owner(k) != c.id) relayed.insert(k);
           std::set<CornerIndex> expected = needed;
           expected.insert(relayed.begin(), relayed.end());
-          const std::set<CornerIndex> got(c.corners_received.begin(), c.corners_received.end());
-          EXPECT_EQ(got.size(), c.corners_received.size()) << where << " cell " << c.id << ": a corner came twice";
+          const std::set<CornerIndex> got(c.received_corners.begin(), c.received_corners.end());
+          EXPECT_EQ(got.size(), c.received_corners.size()) << where << " cell " << c.id << ": a corner came twice";
           EXPECT_EQ(got, expected) << where << " cell " << c.id;
+          EXPECT_EQ(c.corners_received, c.received_corners.size()) << where << " cell " << c.id;
+          const CellReport& without = counted.cells[c.id];
+          EXPECT_TRUE(without.received_corners.empty()) << where << " cell " << c.id;
+          EXPECT_EQ(without.corners_received, c.corners_received) << where << " cell " << c.id;
+          EXPECT_EQ(without.finish, c.finish) << where << " cell " << c.id;
         }
         if (grid.cell_count() == 1) {
           EXPECT_TRUE(r.link_messages.empty()) << where;

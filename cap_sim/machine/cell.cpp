@@ -129,8 +129,10 @@ Process Cell::run() {
           wire_.timeline.span(track_, "wait for corners", "wait", waiting, wire_.kernel.now());
       }
       check_has_every_corner(exchange);
-      // A later unit's corners are of later frames, so the record stays ascending.
-      record_.corners_received.insert(record_.corners_received.end(), unit_received_.begin(), unit_received_.end());
+      record_.corners_received += unit_received_.size();
+      // A later unit's corners are of later frames, so the list stays ascending.
+      if (wire_.keep_received_corners)
+        record_.received_corners.insert(record_.received_corners.end(), unit_received_.begin(), unit_received_.end());
       unit_received_.clear();
       record_.exchange += wire_.kernel.now() - exchange_start;
 

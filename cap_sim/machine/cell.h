@@ -27,7 +27,8 @@ struct CellRecord {
   // Antialiasing: the three phases, each from its start to its end, summed over
   // the run's distribution units.
   Cycles trace_corners, exchange, subdivide;
-  std::vector<CornerIndex> corners_received;  // ascending
+  std::uint64_t corners_received = 0;
+  std::vector<CornerIndex> received_corners;  // ascending; only when Wiring::keep_received_corners
   std::uint64_t pixels = 0;  // over all frames
   std::uint64_t rays = 0;
   OpCounts ops;        // the operations its busy time paid for, all frames
@@ -50,6 +51,7 @@ class Cell {
     std::vector<FrameWork>& frames;
     const std::vector<DistributionUnit>& units;
     bool antialiased;
+    bool keep_received_corners;  // MachineConfig::keep_received_corners
   };
 
   // Takes this cell's traced work out of every frame of wiring.frames.

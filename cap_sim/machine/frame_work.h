@@ -13,6 +13,7 @@
 #include "traced_cells.h"
 #include "window_controller.h"
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -29,8 +30,13 @@ struct FrameWork {
 struct DistributionUnit {
   int first_frame = 0;
   int frames = 1;
-  // Antialiasing: the corner exchange of all the unit's frames at once.
+  // Antialiasing: the corner exchange of all the unit's frames at once. It is
+  // planned as the unit starts and dropped once every cell has finished it
+  // (the cells have taken in all its messages by then), so that a run holds
+  // one unit's plan at a time; corners_needed keeps what the report needs of
+  // it: per cell, how many corners it took in from other cells.
   std::unique_ptr<CornerExchange> exchange;
+  std::vector<std::uint64_t> corners_needed;
 };
 
 }  // namespace capsim::sim

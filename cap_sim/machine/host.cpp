@@ -24,6 +24,7 @@ Process Host::run() {
   for (std::size_t u = 0; u < wire_.units.size(); ++u) {
     const DistributionUnit& unit = wire_.units[u];
     const int first = unit.first_frame, end = unit.first_frame + unit.frames;
+    if (wire_.unit_begins) wire_.unit_begins(u);
     unit_start_.push_back(wire_.kernel.now());
 
     // Voxel generation runs on the host before anything is sent (§5: "done on
@@ -58,6 +59,7 @@ Process Host::run() {
     }
     unit_end_.push_back(wire_.kernel.now());
     wire_.timeline.span(track_, "wait for cells", "wait", collecting, wire_.kernel.now());
+    if (wire_.unit_ends) wire_.unit_ends(u);
   }
 }
 

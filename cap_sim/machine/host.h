@@ -13,6 +13,8 @@
 #include "mailbox.h"
 #include "timeline.h"
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace capsim::sim {
@@ -25,6 +27,10 @@ class Host {
     Timeline& timeline;
     const std::vector<FrameWork>& frames;
     const std::vector<DistributionUnit>& units;
+    // The simulator's bookkeeping, not the host program's: called as a unit
+    // starts and once its last completion message is in, in no simulated
+    // time. May be empty.
+    std::function<void(std::size_t unit)> unit_begins, unit_ends;
   };
 
   Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes);

@@ -38,7 +38,8 @@ std::string sender_name(Endpoint e, const CellGrid& grid) {
   return fmt::format("cell[{},{}]", p.row, p.col);
 }
 
-// The units the host hands the frames out in (frame_work.h).
+// The units the host hands the frames out in (frame_work.h); antialiased,
+// their exchanges are planned as each starts (plan_exchange).
 std::vector<DistributionUnit> distribution_units(const std::vector<FrameWork>& frames,
                                                  const MachineConfig& config) {
   const int count = static_cast<int>(frames.size());
@@ -48,14 +49,16 @@ std::vector<DistributionUnit> distribution_units(const std::vector<FrameWork>& f
     DistributionUnit u;
     u.first_frame = first;
     u.frames = std::min(group, count - first);
-    if (config.aa.depth > 0) {
-      std::vector<const WindowLayout*> layouts;
-      for (int f = first; f < first + u.frames; ++f) layouts.push_back(&frames[f].layout);
-      u.exchange = std::make_unique<CornerExchange>(layouts, first);
-    }
     units.push_back(std::move(u));
   }
   return units;
+}
+
+// The corner exchange of a unit's frames.
+std::unique_ptr<CornerExchange> plan_exchange(const std::vector<FrameWork>& frames, const DistributionUnit& unit) {
+  std::vector<const WindowLayout*> layouts;
+  for (int f = unit.first_frame; f < unit.first_frame + unit.frames; ++f) layouts.push_back(&frames[f].layout);
+  return std::make_unique<CornerExchange>(layouts, unit.first_frame);
 }
 
 // When each screen pixel of a frame reached video memory: a cell writes its
@@ -115,14 +118,14 @@ std::uint64_t unit_video_memory(const std::vector<FrameWork>& frames, const Dist
       const WindowLayout& layout = frames[f].layout;
       const CellWindow& w = layout.window(cell->id());
       bytes += static_cast<std::uint64_t>(w.pixel_count()) * kVideoPixelBytes;
-      if (!unit.exchange) continue;
+      if (unit.corners_needed.empty()) continue;
       for (int k = 0; k < w.pixel_count(); ++k) {
         const ScreenPixel p = w.screen_pixel(k);
         bytes += static_cast<std::uint64_t>(owned_corner_count(p.x, p.y, layout.width(), layout.height())) *
                  kScreenSampleBytes;
       }
     }
-    if (unit.exchange) bytes += unit.exchange->needs(cell->id()).size() * kScreenSampleBytes;
+    if (!unit.corners_needed.empty()) bytes += unit.corners_needed[cell->id()] * kScreenSampleBytes;
     most = std::max(most, bytes);
   }
   return most;
@@ -158,11 +161,13 @@ std::uint64_t simulation_memory(const MachineConfig& config, int width, int heig
   if (aa) {
     // One frame's corners (and their cycles, for a float screen) while it is traced.
     bytes += corners * (sizeof(ScreenSample) + (config.screen == ScreenFormat::Float ? sizeof(std::uint64_t) : 0));
-    // Every unit's exchange plan, made before the run: up to 3 corners needed
-    // from other cells per pixel, each kept as a need and in at most two
-    // messages; and each corner a cell took in, kept for the report (4 bytes
-    // each).
-    bytes += static_cast<std::uint64_t>(frames) * pixels * 3 * (4 + 4 + 4 + 4);
+    // The running unit's exchange plan (DistributionUnit::exchange): up to 3
+    // corners needed from other cells per pixel of its frames, each kept as a
+    // need and in at most two messages (4 bytes each); and, when kept, every
+    // corner a cell took in (4 bytes).
+    const std::uint64_t unit = config.frame_average ? std::min<std::uint64_t>(frames, config.cells.cell_count()) : 1;
+    bytes += unit * pixels * 3 * (4 + 4 + 4);
+    if (config.keep_received_corners) bytes += static_cast<std::uint64_t>(frames) * pixels * 3 * 4;
   }
   return bytes;
 }
@@ -201,7 +206,7 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   } catch (const CycleOverflow& e) {
     throw e.inside("the host's voxel generation, all frames");
   }
-  const std::vector<DistributionUnit> units = distribution_units(frames, config);
+  std::vector<DistributionUnit> units = distribution_units(frames, config);
 
   EventKernel kernel;
   CommandBus bus(kernel, profile);
@@ -210,14 +215,25 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   const int host_track = timeline.add_track("host");
   const int bus_track = timeline.add_track("command bus");
 
-  Host host({kernel, bus, timeline, frames, units}, host_track, grid.cell_count(), profile.program_bytes);
+  const bool antialiased = config.aa.depth > 0;
+  auto unit_begins = [&](std::size_t u) {
+    if (antialiased) units[u].exchange = plan_exchange(frames, units[u]);
+  };
+  auto unit_ends = [&](std::size_t u) {
+    if (!antialiased) return;
+    for (CellId c = 0; c < grid.cell_count(); ++c) units[u].corners_needed.push_back(units[u].exchange->needs(c).size());
+    units[u].exchange.reset();
+  };
+  Host host({kernel, bus, timeline, frames, units, unit_begins, unit_ends}, host_track, grid.cell_count(),
+            profile.program_bytes);
   std::vector<std::unique_ptr<Cell>> cells;
   cells.reserve(grid.cell_count());
   for (CellId id = 0; id < grid.cell_count(); ++id) {
     const CellPosition p = grid.position(id);
     const int track = timeline.add_track(fmt::format("cell[{},{}]", p.row, p.col));
     cells.push_back(std::make_unique<Cell>(
-        id, track, Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, config.aa.depth > 0}));
+        id, track, Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased,
+                                        config.keep_received_corners}));
   }
 
   bus.on_delivery([&](const BusTransfer& t) {
@@ -280,6 +296,7 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
     c.exchange = r.exchange;
     c.subdivide = r.subdivide;
     c.corners_received = r.corners_received;
+    c.received_corners = r.received_corners;
     c.frame_busy = r.frame_busy;
     c.unit_finish = r.unit_finish;
     try {

@@ -36,6 +36,9 @@ struct MachineConfig {
   // Keep when every pixel reached video memory (FrameScreen::completion_cycles);
   // off, a run keeps no per-pixel figures it does not need.
   bool completion_cycles = false;
+  // Keep every corner each cell took in (CellReport::received_corners), for
+  // tests of the exchange; off, a cell keeps only their count.
+  bool keep_received_corners = false;
 };
 
 struct CellReport {
@@ -49,7 +52,8 @@ struct CellReport {
   // Antialiasing: each phase from its start to its end (the exchange includes
   // its waits), summed over the units, and the corners it took in over the links.
   Cycles trace_corners, exchange, subdivide;
-  std::vector<CornerIndex> corners_received;  // ascending
+  std::uint64_t corners_received = 0;
+  std::vector<CornerIndex> received_corners;  // ascending; with MachineConfig::keep_received_corners
   std::vector<Cycles> frame_busy;   // per frame: the cycles it worked on it
   std::vector<Cycles> unit_finish;  // per unit: when its "done" reached the host
 };

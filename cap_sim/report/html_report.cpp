@@ -196,7 +196,7 @@ std::string cell_table(const SimulationResult& r) {
                         seconds_cell(c.finish, hz));
     if (aa)
       body += fmt::format("{}{}{}<td>{}</td>", seconds_cell(c.trace_corners, hz), seconds_cell(c.exchange, hz),
-                          seconds_cell(c.subdivide, hz), grouped(c.corners_received.size()));
+                          seconds_cell(c.subdivide, hz), grouped(c.corners_received));
     body += "</tr>\n";
   }
   return fmt::format(

@@ -131,7 +131,7 @@ std::string format_antialiasing(const SimulationResult& r) {
   for (const CellReport& c : r.cells)
     out += fmt::format("{:>4} {:>4} {:>16} {:>14} {:>14} {:>9}\n", c.position.row, c.position.col,
                        c.trace_corners.count(), c.exchange.count(), c.subdivide.count(),
-                       c.corners_received.size());
+                       c.corners_received);
   const LinkTotals t = link_totals(r);
   out += fmt::format(
       "link traffic: {} messages, {} bytes, {} hops (at most {} for one message) over {} links\n"
@@ -194,7 +194,7 @@ void add_antialiasing(nlohmann::json& report, const SimulationResult& r) {
     cell["trace_corners_cycles"] = c.trace_corners.count();
     cell["exchange_cycles"] = c.exchange.count();
     cell["subdivide_cycles"] = c.subdivide.count();
-    cell["corners_received"] = c.corners_received.size();
+    cell["corners_received"] = c.corners_received;
   }
   json links = json::array();
   for (const LinkTraffic& l : r.links) {
