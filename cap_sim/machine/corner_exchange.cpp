@@ -1,5 +1,7 @@
 #include "corner_exchange.h"
 
+#include "capsim/antialias.h"
+
 #include <algorithm>
 #include <stdexcept>
 #include <tuple>
@@ -55,7 +57,8 @@ CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int firs
     for (int y = 0; y <= height_; ++y)
       for (int x = 0; x <= width_; ++x) {
         const CornerIndex c = index(first_frame_ + static_cast<int>(f), x, y);
-        const CellId o = pixel_owner(std::min(x, width_ - 1), std::min(y, height_ - 1));
+        const CornerPixel p = corner_pixel(x, y, width_, height_);
+        const CellId o = pixel_owner(p.x, p.y);
         CellId needers[3];
         int count = 0;
         auto need = [&](int px, int py) {
@@ -86,7 +89,8 @@ CellId CornerExchange::owner(CornerIndex corner) const {
   const CornerIndex k = corner % corners_per_frame_;
   const int x = static_cast<int>(k % static_cast<CornerIndex>(width_ + 1));
   const int y = static_cast<int>(k / static_cast<CornerIndex>(width_ + 1));
-  return frames_[f]->owner({std::min(x, width_ - 1), std::min(y, height_ - 1)}).cell;
+  const CornerPixel p = corner_pixel(x, y, width_, height_);
+  return frames_[f]->owner({p.x, p.y}).cell;
 }
 
 }  // namespace capsim::sim

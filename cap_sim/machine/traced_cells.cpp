@@ -12,8 +12,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 namespace capsim::sim {
 
@@ -119,15 +117,6 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
     cell.samples.set(k, 0, px);
 }
 
-// Runs body(rows) over the screen's rows on `threads` host threads.
-template <class Body>
-void parallel_rows(int threads, int count, Body body) {
-  tbb::task_arena arena(host_arena_concurrency(threads));
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
-  });
-}
-
 // Antialiased: every corner sample traced and charged to the cell that owns it
 // (phase 1), then every pixel resolved from its corners and charged to its
 // cell (phase 3).
@@ -140,7 +129,10 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
   const bool floats = format == ScreenFormat::Float;
   std::vector<TracedCell> cells = empty_cells(layout, format, true, keep_write_cycles);
   const OwnerTable owners(layout);
-  auto owner = [&](int x, int y) { return owners.owner(std::min(x, width - 1), std::min(y, height - 1)); };
+  auto owner = [&](int x, int y) {
+    const CornerPixel p = corner_pixel(x, y, width, height);
+    return owners.owner(p.x, p.y);
+  };
 
   // Phase 1. With a float screen each corner's cycles are kept until they are
   // folded into the pixel that owns it (a bottom-row pixel owns corners of two

@@ -17,6 +17,7 @@
 
 #include "capsim/tracer.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -75,6 +76,16 @@ struct CornerSamples {
   std::size_t index(int x, int y) const { return static_cast<std::size_t>(y) * (width + 1) + x; }
   const ScreenSample& at(int x, int y) const { return samples[index(x, y)]; }
 };
+
+// The pixel whose owner traces corner (x, y) of a width x height screen: the
+// pixel it is the top-left corner of, or, for the extra right column and
+// bottom row of corners, the last pixel of that row or column.
+struct CornerPixel {
+  int x, y;
+};
+inline CornerPixel corner_pixel(int x, int y, int width, int height) {
+  return {std::min(x, width - 1), std::min(y, height - 1)};
+}
 
 // The number of corner samples a pixel's owner traces: its own (top-left)
 // corner, plus the screen's extra right column and bottom row of corners for

@@ -1,5 +1,10 @@
 #pragma once
-// How many host threads a parallel loop runs on. The output never depends on it.
+// How many host threads a parallel loop runs on, and the loop over an image's
+// rows that every tracing pass uses. The output never depends on them.
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 namespace capsim {
 
@@ -9,5 +14,15 @@ namespace capsim {
 // on stderr, and more threads than cores could not run at once anyway.
 // Precondition: threads >= 0.
 int host_arena_concurrency(int threads);
+
+// Runs body(rows), rows a tbb::blocked_range<int>, over the rows [0, count) on
+// `threads` host threads (0 = all).
+template <class Body>
+void parallel_rows(int threads, int count, Body body) {
+  tbb::task_arena arena(host_arena_concurrency(threads));
+  arena.execute([&] {
+    tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
+  });
+}
 
 }  // namespace capsim

@@ -4,8 +4,6 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 namespace capsim {
 
@@ -31,15 +29,6 @@ void Framebuffer::set(int i, int j, const PixelSample& s) {
 }
 
 namespace {
-
-// Runs body(rows) over the rows [0, count) on `threads` host threads.
-template <class Body>
-void parallel_rows(int threads, int count, Body body) {
-  tbb::task_arena arena(host_arena_concurrency(threads));
-  arena.execute([&] {
-    tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
-  });
-}
 
 struct Worker {
   Tracer::Scratch scratch;
