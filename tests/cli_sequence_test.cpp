@@ -7,6 +7,7 @@
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"
 
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -25,9 +26,9 @@ std::string frame_text(int k) {
 std::string write_frames(const TempDir& dir, int count) {
   std::string files;
   for (int k = 0; k < count; ++k) {
-    const std::string path = dir / ("f" + std::to_string(k) + ".csg");
+    const std::string path = dir / fmt::format("f{}.csg", k);
     std::ofstream(path) << frame_text(k);
-    files += " " + path;
+    files += fmt::format(" {}", path);
   }
   return files;
 }
@@ -71,7 +72,7 @@ TEST(CliSequence, AFrameThatFailsLeavesNoFrameWritten) {
   TempDir dir;
   std::string files = write_frames(dir, 2);
   std::ofstream(dir / "bad.csg") << "sphere(r = -1);\n";
-  files += " " + (dir / "bad.csg");
+  files += fmt::format(" {}", dir / "bad.csg");
   for (const std::string cmd : {"render", "simulate"}) {
     const RunResult r = run_capsim(cmd + files + " -o " + (dir / "out.png") + " --size 16x16", dir);
     EXPECT_EQ(r.status, 1) << cmd;

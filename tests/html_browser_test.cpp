@@ -182,7 +182,7 @@ TEST(HtmlReportInBrowser, ScriptBuildsThePlayerHeatMapTableAndTimelineFromTheRun
   std::stable_sort(sorted.begin(), sorted.end(),
                    [](const CellReport& a, const CellReport& b) { return a.busy > b.busy; });
   std::string order;
-  for (const CellReport& c : sorted) order += (order.empty() ? "" : " ") + std::to_string(c.id);
+  for (const CellReport& c : sorted) order += fmt::format("{}{}", order.empty() ? "" : " ", c.id);
   EXPECT_EQ(table.at("order"), order);
   const std::size_t rows = dom.find("<tbody>", dom.find("id=\"cell-table\""));
   EXPECT_NE(dom.find(fmt::format("<tr data-cell=\"{}\" data-row=\"{}\" data-col=\"{}\" data-pixels=\"{}\" "
@@ -274,7 +274,7 @@ TEST(ModesPageInBrowser, ScriptSortsTheTableOfRunsByTheColumnNamed) {
     return bench.runs[a].figures.spread.deviation_percent > bench.runs[b].figures.spread.deviation_percent;
   });
   std::string order;
-  for (const std::size_t i : index) order += (order.empty() ? "" : " ") + std::to_string(i);
+  for (const std::size_t i : index) order += fmt::format("{}{}", order.empty() ? "" : " ", i);
   EXPECT_EQ(table.at("order"), order);
   ASSERT_NE(index[0], 0u) << "the sort must move rows for the test to tell";
   // The rows themselves moved: the first in the DOM is the run with the largest d.
