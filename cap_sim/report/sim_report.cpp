@@ -1,5 +1,7 @@
 #include "sim_report.h"
 
+#include "chrome_trace.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -308,7 +310,7 @@ std::string report_json_text(const SimulationResult& r) { return report_json(r).
 std::string chrome_trace_text(const SimulationResult& r) {
   const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", to_string(r.config.cells),
                                        to_string(r.config.mode), r.config.profile.name);
-  return r.timeline.to_chrome_trace(name, r.config.profile.clock_hz).dump() + "\n";
+  return chrome_trace(r.timeline, name, r.config.profile.clock_hz).dump() + "\n";
 }
 
 }  // namespace capsim::sim

@@ -1,12 +1,9 @@
 #pragma once
-// The simulation's timeline: spans of simulated time on named tracks (the host,
-// the bus, every cell), written as Chrome trace-event JSON (opens in Perfetto,
-// ui.perfetto.dev, and chrome://tracing). Times are simulated microseconds;
-// every span also carries its exact cycles in "args".
+// The simulation's timeline as the machine records it: spans of simulated time
+// on named tracks (the host, the bus, every cell, every link direction that
+// carried a message). The report writes it out (report/chrome_trace.h).
 
 #include "cycles.h"
-
-#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <string>
@@ -21,6 +18,8 @@ struct TimelineSpan {
   Cycles begin;
   Cycles end;
   std::uint64_t bytes = 0;  // for transfers; 0 = not a transfer
+
+  bool operator==(const TimelineSpan&) const = default;
 };
 
 class Timeline {
@@ -33,9 +32,7 @@ class Timeline {
   const std::vector<TimelineSpan>& spans() const { return spans_; }
   const std::vector<std::string>& tracks() const { return tracks_; }
 
-  // {"displayTimeUnit": "ms", "traceEvents": [...]}: metadata naming the process and
-  // each track, then one complete ("X") event per span, in recording order.
-  nlohmann::json to_chrome_trace(const std::string& process_name, std::uint64_t clock_hz) const;
+  bool operator==(const Timeline&) const = default;
 
  private:
   std::vector<std::string> tracks_;
