@@ -29,8 +29,7 @@ struct alignas(64) PreparedPrimitive {
 
 PreparedPrimitive prepare_primitive(const Primitive& p);
 
-// The object-space bounding box of a canonical primitive (before to_world).
-Aabb object_bounds(PrimitiveKind kind);
+// The object-space bounding box of a prepared primitive (scene.h's object_bounds).
 inline Aabb object_bounds(const PreparedPrimitive& p) { return object_bounds(p.kind); }
 
 // Which surface of the primitive a crossing lies on (box: face 0..5 as -x,+x,-y,+y,

@@ -3,6 +3,8 @@
 // materials and background. Geometry is kept exact (quadrics and planes); nothing
 // is tessellated.
 
+#include "capsim/bounds.h"
+
 #include <glm/glm.hpp>
 
 #include <limits>
@@ -39,6 +41,11 @@ class SceneError : public std::runtime_error {
 // give a cylinder, r2 = 0 a pointed cone.
 enum class PrimitiveKind { Sphere, Box, Cone };
 const char* to_string(PrimitiveKind kind);
+
+// The object-space bounding box of a canonical primitive (before to_world):
+// the unit sphere, the unit cube [0,1]^3, the frustum 0 <= z <= 1 of radius
+// at most 1.
+Aabb object_bounds(PrimitiveKind kind);
 
 struct Material {
   double ambient = 0.1;    // fraction of the surface colour lit regardless of lights

@@ -5,7 +5,7 @@
 
 #include "capsim/parser.h"
 
-#include "capsim/scene_range.h"
+#include "capsim/scene_limits.h"
 
 #include <fmt/format.h>
 
@@ -348,7 +348,7 @@ class Interpreter {
     return leaf;
   }
 
-  // The range of scene_range.h a placed primitive must keep to, whatever the
+  // The range of scene_limits.h a placed primitive must keep to, whatever the
   // transforms around it: its bounding box within kMaxLength of the origin,
   // and no dimension below kMinLength.
   static void check_placement(const Call& call, const Primitive& p) {

@@ -26,6 +26,18 @@ const char* to_string(PrimitiveKind kind) {
   return "?";
 }
 
+Aabb object_bounds(PrimitiveKind kind) {
+  switch (kind) {
+    case PrimitiveKind::Sphere:
+      return {glm::dvec3(-1), glm::dvec3(1)};
+    case PrimitiveKind::Box:
+      return {glm::dvec3(0), glm::dvec3(1)};
+    case PrimitiveKind::Cone:
+      return {glm::dvec3(-1, -1, 0), glm::dvec3(1, 1, 1)};
+  }
+  return {};
+}
+
 const char* to_string(CsgOp op) {
   switch (op) {
     case CsgOp::Union: return "union";

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "capsim/scene_range.h"
+#include "capsim/scene_limits.h"
 #include "scene_args.h"
 #include "scene_colors.h"
 

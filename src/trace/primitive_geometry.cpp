@@ -155,18 +155,6 @@ bool intersect_cone(const glm::dvec3& o, const glm::dvec3& d, double r1, double 
 
 }  // namespace
 
-Aabb object_bounds(PrimitiveKind kind) {
-  switch (kind) {
-    case PrimitiveKind::Sphere:
-      return {glm::dvec3(-1), glm::dvec3(1)};
-    case PrimitiveKind::Box:
-      return {glm::dvec3(0), glm::dvec3(1)};
-    case PrimitiveKind::Cone:
-      return {glm::dvec3(-1, -1, 0), glm::dvec3(1, 1, 1)};
-  }
-  return {};
-}
-
 PreparedPrimitive prepare_primitive(const Primitive& prim) {
   PreparedPrimitive p;
   p.kind = prim.kind;
