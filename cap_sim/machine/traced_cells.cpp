@@ -114,7 +114,7 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
   if (format == ScreenFormat::Srgb8)
     encode_srgb8_row({&px, 1}, cell.srgb8.data() + static_cast<std::size_t>(k) * 3);
   else
-    cell.samples.set(k, 0, px);
+    set_pixel(cell.samples, k, 0, px);
 }
 
 // Antialiased: every corner sample traced and charged to the cell that owns it

@@ -1,5 +1,7 @@
 #include "heatmap.h"
 
+#include "capsim/srgb.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -136,11 +138,6 @@ RgbImage render_completion_map(const std::vector<std::uint64_t>& completion, int
     std::copy(c.begin(), c.end(), image.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(k));
   }
   return image;
-}
-
-float srgb8_to_linear(unsigned char v) {
-  const double s = v / 255.0;
-  return static_cast<float>(s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4));
 }
 
 Framebuffer to_framebuffer(const RgbImage& image) {

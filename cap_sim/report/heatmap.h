@@ -33,7 +33,4 @@ RgbImage render_completion_map(const std::vector<std::uint64_t>& completion, int
 // back exactly these 8-bit colours.
 Framebuffer to_framebuffer(const RgbImage& image);
 
-// 8-bit sRGB -> linear, the inverse of linear_to_srgb8 on every 8-bit value.
-float srgb8_to_linear(unsigned char v);
-
 }  // namespace capsim::sim

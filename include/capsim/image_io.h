@@ -11,7 +11,7 @@
 // which would cost more than tracing a megapixel.
 
 #include "capsim/pending_file.h"
-#include "capsim/render.h"
+#include "capsim/framebuffer.h"
 
 #include <span>
 #include <string>
@@ -47,13 +47,6 @@ bool is_supported_image_path(const std::string& path);
 
 // True for a .png path (any case): an 8-bit image, which needs only colour.
 bool is_png_path(const std::string& path);
-
-// Linear [0,1] -> 8-bit sRGB, the encoding PNG output uses.
-unsigned char linear_to_srgb8(float v);
-
-// One row of samples' colours as 8-bit sRGB, 3 bytes per sample, as the PNG
-// output encodes them; rgb holds 3 * row.size() bytes.
-void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb);
 
 // An 8-bit sRGB RGB image (3 bytes per pixel, row 0 at the top) as PNG, written
 // under a temporary name and renamed on success; throws std::runtime_error.

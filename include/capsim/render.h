@@ -3,6 +3,7 @@
 // the result does not depend on the thread count).
 
 #include "capsim/antialias.h"
+#include "capsim/framebuffer.h"
 #include "capsim/progress.h"
 #include "capsim/tracer.h"
 
@@ -13,19 +14,12 @@
 
 namespace capsim {
 
-struct Framebuffer {
-  int width = 0, height = 0;
-  std::vector<float> rgba;   // linear, 4 floats per pixel, row 0 at the top
-  std::vector<float> depth;  // distance from the eye to the visible surface; +inf on a miss
-  std::vector<float> id;     // 0-based visible primitive index in file order; -1 on a miss
+// Stores a traced sample as pixel (i, j) of fb.
+void set_pixel(Framebuffer& fb, int i, int j, const PixelSample& s);
 
-  Framebuffer() = default;
-  Framebuffer(int w, int h);
-  void set(int i, int j, const PixelSample& s);
-
-  // The bytes the buffers of a w x h framebuffer hold.
-  static std::uint64_t bytes(int w, int h);
-};
+// One row of samples' colours as 8-bit sRGB, 3 bytes per sample, as the PNG
+// output encodes them; rgb holds 3 * row.size() bytes.
+void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb);
 
 struct RenderStats {
   OpCounts ops;  // summed over every pixel

@@ -62,7 +62,7 @@ Command add_render_command(CLI::App& app) {
             tracer, settings.threads,
             [&](int j, std::span<const PixelSample> row) {
               for (int i = 0; i < width; ++i) {
-                fb.set(i, j, row[i]);
+                set_pixel(fb, i, j, row[i]);
                 samples.values[static_cast<std::size_t>(j) * width + i] = static_cast<float>(row[i].samples);
               }
             },

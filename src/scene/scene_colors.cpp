@@ -144,12 +144,8 @@ const std::vector<std::string>& color_names() {
   return names;
 }
 
-double srgb_to_linear(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 glm::dvec3 srgb_to_linear(const glm::dvec3& c) {
-  return glm::dvec3(srgb_to_linear(c.x), srgb_to_linear(c.y), srgb_to_linear(c.z));
+  return glm::dvec3(capsim::srgb_to_linear(c.x), capsim::srgb_to_linear(c.y), capsim::srgb_to_linear(c.z));
 }
 
 }  // namespace capsim::scene_file

@@ -2,6 +2,8 @@
 // Colour names and codes as OpenSCAD's color() accepts them, and the sRGB
 // decoding that turns file colours into the linear values the tracer shades with.
 
+#include "capsim/srgb.h"
+
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
@@ -19,7 +21,6 @@ std::optional<glm::dvec4> lookup_color(std::string_view text);
 const std::vector<std::string>& color_names();
 
 // The sRGB transfer function inverted: an sRGB component in [0, 1] -> linear.
-double srgb_to_linear(double c);
 glm::dvec3 srgb_to_linear(const glm::dvec3& c);
 
 }  // namespace capsim::scene_file

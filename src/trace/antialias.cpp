@@ -2,7 +2,7 @@
 
 #include "capsim/antialias.h"
 
-#include "capsim/image_io.h"
+#include "capsim/srgb.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -1,31 +1,30 @@
 #include "capsim/render.h"
 
 #include "capsim/host_threads.h"
+#include "capsim/srgb.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 
 namespace capsim {
 
-Framebuffer::Framebuffer(int w, int h)
-    : width(w),
-      height(h),
-      rgba(static_cast<std::size_t>(w) * h * 4, 0.0f),
-      depth(static_cast<std::size_t>(w) * h, std::numeric_limits<float>::infinity()),
-      id(static_cast<std::size_t>(w) * h, -1.0f) {}
-
-std::uint64_t Framebuffer::bytes(int w, int h) {
-  return static_cast<std::uint64_t>(w) * static_cast<std::uint64_t>(h) * (4 + 1 + 1) * sizeof(float);
+void set_pixel(Framebuffer& fb, int i, int j, const PixelSample& s) {
+  const std::size_t k = static_cast<std::size_t>(j) * fb.width + i;
+  fb.rgba[4 * k + 0] = static_cast<float>(s.color.x);
+  fb.rgba[4 * k + 1] = static_cast<float>(s.color.y);
+  fb.rgba[4 * k + 2] = static_cast<float>(s.color.z);
+  fb.rgba[4 * k + 3] = s.alpha;
+  fb.depth[k] = static_cast<float>(s.depth);
+  fb.id[k] = static_cast<float>(s.primitive);
 }
 
-void Framebuffer::set(int i, int j, const PixelSample& s) {
-  const std::size_t k = static_cast<std::size_t>(j) * width + i;
-  rgba[4 * k + 0] = static_cast<float>(s.color.x);
-  rgba[4 * k + 1] = static_cast<float>(s.color.y);
-  rgba[4 * k + 2] = static_cast<float>(s.color.z);
-  rgba[4 * k + 3] = s.alpha;
-  depth[k] = static_cast<float>(s.depth);
-  id[k] = static_cast<float>(s.primitive);
+void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb) {
+  const Srgb8Encoder& encode = srgb8_encoder();
+  for (const PixelSample& px : row) {
+    *rgb++ = encode(static_cast<float>(px.color.x));
+    *rgb++ = encode(static_cast<float>(px.color.y));
+    *rgb++ = encode(static_cast<float>(px.color.z));
+  }
 }
 
 namespace {
@@ -111,7 +110,7 @@ Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats, Progre
   render_rows(
       tracer, threads,
       [&](int j, std::span<const PixelSample> row) {
-        for (int i = 0; i < cam.width; ++i) fb.set(i, j, row[i]);
+        for (int i = 0; i < cam.width; ++i) set_pixel(fb, i, j, row[i]);
       },
       stats, progress, aa);
   return fb;

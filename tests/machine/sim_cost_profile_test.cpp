@@ -286,10 +286,5 @@ TEST(Heatmap, ViridisClampsItsArgumentAndTakesNaNAsZero) {
   EXPECT_EQ(viridis(std::numeric_limits<double>::quiet_NaN()), viridis(0.0));
 }
 
-TEST(Heatmap, ColoursSurviveTheSrgbEncodingOfPngOutput) {
-  for (int v = 0; v < 256; ++v)
-    EXPECT_EQ(linear_to_srgb8(srgb8_to_linear(static_cast<unsigned char>(v))), v);
-}
-
 }  // namespace
 }  // namespace capsim::sim

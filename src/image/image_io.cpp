@@ -1,5 +1,7 @@
 #include "capsim/image_io.h"
 
+#include "capsim/srgb.h"
+
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
@@ -163,79 +165,7 @@ void write_exr_file(const PendingFile& out, const Framebuffer& fb, const std::ve
   }
 }
 
-// The sRGB encoding of one channel, rounded to 8 bits: the definition that
-// linear_to_srgb8 must reproduce exactly.
-unsigned char encode_srgb8(float v) {
-  if (!(v > 0)) return 0;  // also NaN
-  if (v >= 1) return 255;
-  const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-  return static_cast<unsigned char>(std::lround(s * 255.0f));
-}
-
-// thresholds[b] is the least float whose encoding is at least b (b = 1..255).
-std::array<float, 256> srgb8_thresholds() {
-  std::array<float, 256> t{};
-  t[0] = -std::numeric_limits<float>::infinity();
-  for (int b = 1; b < 256; ++b) {
-    float lo = 0.0f, hi = 1.0f;  // encode(lo) < b <= encode(hi)
-    while (std::nextafter(lo, 1.0f) < hi) {
-      const float mid = lo + (hi - lo) / 2;
-      if (mid <= lo || mid >= hi) break;
-      (encode_srgb8(mid) >= b ? hi : lo) = mid;
-    }
-    t[b] = hi;
-  }
-  return t;
-}
-
-// The encoding by table: floats in [0, 1] fall into 16257 buckets by their top
-// 16 bits (sign, exponent and 7 mantissa bits). No bucket spans more than one
-// step of the encoding, so a bucket's first code and the threshold of the next
-// code give the exact result with one comparison. The encoding is monotonic,
-// and the buckets are built from its thresholds, so the table reproduces
-// encode_srgb8 bit for bit (the construction checks the one-step property).
-class Srgb8Table {
- public:
-  Srgb8Table() {
-    const std::array<float, 256> t = srgb8_thresholds();
-    for (std::uint32_t b = 0; b < kBuckets; ++b) {
-      const float first = float_of(b << 16), last = float_of((b << 16) | 0xffffu);
-      const auto code = static_cast<int>(std::upper_bound(t.begin() + 1, t.end(), first) - t.begin() - 1);
-      code_[b] = static_cast<unsigned char>(code);
-      next_[b] = code < 255 ? t[code + 1] : std::numeric_limits<float>::infinity();
-      if (code < 254 && last >= t[code + 2])
-        throw std::logic_error("sRGB table: a bucket spans two steps of the encoding");
-    }
-  }
-  unsigned char operator()(float v) const {
-    // Into [0, 1] without branches; NaN becomes 0 (std::max returns its first
-    // argument when the comparison fails).
-    v = std::min(std::max(0.0f, v), 1.0f);
-    std::uint32_t bits;
-    std::memcpy(&bits, &v, sizeof bits);
-    const std::uint32_t b = bits >> 16;
-    return static_cast<unsigned char>(code_[b] + (v >= next_[b] ? 1 : 0));
-  }
-
- private:
-  static constexpr std::uint32_t kBuckets = 0x3f81;  // up to the top 16 bits of 1.0f
-  static float float_of(std::uint32_t bits) {
-    float f;
-    std::memcpy(&f, &bits, sizeof f);
-    return f;
-  }
-  std::array<unsigned char, kBuckets> code_{};
-  std::array<float, kBuckets> next_{};
-};
-
-const Srgb8Table& srgb8_table() {
-  static const Srgb8Table table;
-  return table;
-}
-
 }  // namespace
-
-unsigned char linear_to_srgb8(float v) { return srgb8_table()(v); }
 
 bool is_supported_image_path(const std::string& path) {
   const std::string ext = lower_extension(path);
@@ -243,15 +173,6 @@ bool is_supported_image_path(const std::string& path) {
 }
 
 bool is_png_path(const std::string& path) { return lower_extension(path) == ".png"; }
-
-void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb) {
-  const Srgb8Table& encode = srgb8_table();
-  for (const PixelSample& px : row) {
-    *rgb++ = encode(static_cast<float>(px.color.x));
-    *rgb++ = encode(static_cast<float>(px.color.y));
-    *rgb++ = encode(static_cast<float>(px.color.z));
-  }
-}
 
 std::uint64_t write_png_rgb8_memory(int width, int height) {
   const std::uint64_t filtered = (static_cast<std::uint64_t>(width) * 3 + 1) * static_cast<std::uint64_t>(height);
@@ -299,7 +220,7 @@ void write_image(PendingFile& out, const Framebuffer& fb, const std::vector<Extr
 
   if (is_png_path(path)) {
     // 8-bit sRGB; the background is opaque, coverage lives in the EXR.
-    const Srgb8Table& encode = srgb8_table();
+    const Srgb8Encoder& encode = srgb8_encoder();
     std::vector<unsigned char> rgb(pixels * 3);
     for (std::size_t k = 0; k < pixels; ++k)
       for (int c = 0; c < 3; ++c) rgb[3 * k + c] = encode(fb.rgba[4 * k + c]);
@@ -327,7 +248,7 @@ std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vec
 }
 
 std::vector<unsigned char> srgb8_pixels(const Framebuffer& fb) {
-  const Srgb8Table& encode = srgb8_table();
+  const Srgb8Encoder& encode = srgb8_encoder();
   const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
   std::vector<unsigned char> rgb(pixels * 3);
   for (std::size_t k = 0; k < pixels; ++k)
