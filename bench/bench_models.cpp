@@ -7,7 +7,7 @@
 //   bench_models [--benchmark_filter=...]
 // Arguments: host threads (1 or 2).
 
-#include "machine.h"
+#include "machine/machine.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"

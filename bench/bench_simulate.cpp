@@ -7,7 +7,7 @@
 // Scene: scenes/balls.csg at 512x512; machine: 8x8 cells, dot mode, cap profile.
 // Arguments: host threads, antialiasing depth (0 or 2).
 
-#include "machine.h"
+#include "machine/machine.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"

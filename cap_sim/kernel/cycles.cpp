@@ -1,4 +1,4 @@
-#include "cycles.h"
+#include "kernel/cycles.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "event_kernel.h"
+#include "kernel/event_kernel.h"
 
 #include <fmt/core.h>
 

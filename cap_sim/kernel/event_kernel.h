@@ -10,8 +10,8 @@
 // An event scheduled for the current cycle with a priority whose turn has
 // already passed runs next: time never goes backwards.
 
-#include "cycles.h"
-#include "process.h"
+#include "kernel/cycles.h"
+#include "kernel/process.h"
 
 #include <cstdint>
 #include <functional>

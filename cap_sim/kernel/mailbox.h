@@ -3,7 +3,7 @@
 // arrival order; `co_await inbox.receive()` takes the oldest, waiting for one if
 // none has come yet. One process receives from a given mailbox.
 
-#include "event_kernel.h"
+#include "kernel/event_kernel.h"
 
 #include <deque>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "timeline.h"
+#include "kernel/timeline.h"
 
 namespace capsim::sim {
 

@@ -3,7 +3,7 @@
 // on named tracks (the host, the bus, every cell, every link direction that
 // carried a message). The report writes it out (report/chrome_trace.h).
 
-#include "cycles.h"
+#include "kernel/cycles.h"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-#include "cell.h"
+#include "machine/cell.h"
 
-#include "frame_protocol.h"
+#include "machine/frame_protocol.h"
 
 #include <fmt/core.h>
 

@@ -2,15 +2,15 @@
 // One cell of CAP: its ID, its window controller, its video memory, and the
 // program it runs (paper §3.3), frame after frame.
 
-#include "command_bus.h"
-#include "corner_exchange.h"
-#include "event_kernel.h"
-#include "frame_work.h"
-#include "mailbox.h"
-#include "neighbour_links.h"
-#include "timeline.h"
-#include "traced_cells.h"
-#include "window_controller.h"
+#include "kernel/event_kernel.h"
+#include "kernel/mailbox.h"
+#include "kernel/timeline.h"
+#include "machine/command_bus.h"
+#include "machine/corner_exchange.h"
+#include "machine/frame_work.h"
+#include "machine/neighbour_links.h"
+#include "machine/traced_cells.h"
+#include "machine/window_controller.h"
 
 #include "capsim/render.h"
 

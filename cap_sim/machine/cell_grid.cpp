@@ -1,4 +1,4 @@
-#include "cell_grid.h"
+#include "machine/cell_grid.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "command_bus.h"
+#include "machine/command_bus.h"
 
 #include <fmt/core.h>
 

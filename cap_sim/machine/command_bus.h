@@ -12,8 +12,8 @@
 // pending request with the earliest request cycle; among equals the host first,
 // then the lowest cell id; then the earliest request (FIFO).
 
-#include "cost_profile.h"
-#include "event_kernel.h"
+#include "kernel/event_kernel.h"
+#include "machine/cost_profile.h"
 
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "corner_exchange.h"
+#include "machine/corner_exchange.h"
 
 #include "capsim/antialias.h"
 

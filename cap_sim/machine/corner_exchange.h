@@ -24,8 +24,8 @@
 // frames, each with its own dot shift): the corners of all of them travel in
 // the same messages, one per pair of cells and step.
 
-#include "cell_grid.h"
-#include "window_controller.h"
+#include "machine/cell_grid.h"
+#include "machine/window_controller.h"
 
 #include <cstdint>
 #include <vector>

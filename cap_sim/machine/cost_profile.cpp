@@ -1,6 +1,6 @@
-#include "cost_profile.h"
+#include "machine/cost_profile.h"
 
-#include "builtin_profiles.h"
+#include "machine/builtin_profiles.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

@@ -4,7 +4,7 @@
 // format is in docs/simulation.md, the figures in docs/calibration.md); `cap` and
 // `m380` are compiled into the binary, any other file can be loaded by path.
 
-#include "cycles.h"
+#include "kernel/cycles.h"
 
 #include "capsim/op_counts.h"
 

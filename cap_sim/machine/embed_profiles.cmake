@@ -14,7 +14,7 @@ foreach(profile ${profiles})
   string(APPEND entries "    {\"${name}\", R\"capsim_json(${text})capsim_json\"},\n")
 endforeach()
 set(source "// Generated from cap_sim/profiles/*.json by cap_sim/machine/embed_profiles.cmake.
-#include \"builtin_profiles.h\"
+#include \"machine/builtin_profiles.h\"
 
 namespace capsim::sim {
 

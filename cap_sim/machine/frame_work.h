@@ -7,11 +7,11 @@
 // shift; the cells run through the group's frames without waiting for each
 // other, and the host collects the group.
 
-#include "corner_exchange.h"
-#include "cycles.h"
-#include "scene_footprint.h"
-#include "traced_cells.h"
-#include "window_controller.h"
+#include "kernel/cycles.h"
+#include "machine/corner_exchange.h"
+#include "machine/scene_footprint.h"
+#include "machine/traced_cells.h"
+#include "machine/window_controller.h"
 
 #include <cstdint>
 #include <memory>

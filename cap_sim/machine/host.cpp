@@ -1,6 +1,6 @@
-#include "host.h"
+#include "machine/host.h"
 
-#include "frame_protocol.h"
+#include "machine/frame_protocol.h"
 
 #include <fmt/core.h>
 

@@ -6,12 +6,12 @@
 // completion messages; the next unit starts when every cell has finished this
 // one.
 
-#include "command_bus.h"
-#include "cost_profile.h"
-#include "event_kernel.h"
-#include "frame_work.h"
-#include "mailbox.h"
-#include "timeline.h"
+#include "kernel/event_kernel.h"
+#include "kernel/mailbox.h"
+#include "kernel/timeline.h"
+#include "machine/command_bus.h"
+#include "machine/cost_profile.h"
+#include "machine/frame_work.h"
 
 #include <cstddef>
 #include <functional>

@@ -1,12 +1,12 @@
-#include "machine.h"
+#include "machine/machine.h"
 
-#include "cell.h"
-#include "command_bus.h"
-#include "event_kernel.h"
-#include "host.h"
 #include "capsim/host_threads.h"
 #include "capsim/progress.h"
-#include "video_bus.h"
+#include "kernel/event_kernel.h"
+#include "machine/cell.h"
+#include "machine/command_bus.h"
+#include "machine/host.h"
+#include "machine/video_bus.h"
 
 #include <fmt/core.h>
 #include <tbb/task_arena.h>

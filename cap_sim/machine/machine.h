@@ -4,15 +4,15 @@
 // tracing itself is done ahead by host threads (trace_cells); the event loop
 // alone decides simulated time.
 
-#include "cell_grid.h"
-#include "corner_exchange.h"
-#include "cost_profile.h"
-#include "frame_work.h"
-#include "neighbour_links.h"
-#include "scene_footprint.h"
-#include "timeline.h"
-#include "traced_cells.h"
-#include "window_controller.h"
+#include "kernel/timeline.h"
+#include "machine/cell_grid.h"
+#include "machine/corner_exchange.h"
+#include "machine/cost_profile.h"
+#include "machine/frame_work.h"
+#include "machine/neighbour_links.h"
+#include "machine/scene_footprint.h"
+#include "machine/traced_cells.h"
+#include "machine/window_controller.h"
 
 #include "capsim/prepared_scene.h"
 #include "capsim/render.h"

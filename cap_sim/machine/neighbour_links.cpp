@@ -1,4 +1,4 @@
-#include "neighbour_links.h"
+#include "machine/neighbour_links.h"
 
 #include <fmt/core.h>
 

@@ -10,9 +10,9 @@
 // link.topology) the edge cells are linked to the opposite edge too, and each
 // axis goes the shorter way round (east or south where both are as short).
 
-#include "cell_grid.h"
-#include "cost_profile.h"
-#include "event_kernel.h"
+#include "kernel/event_kernel.h"
+#include "machine/cell_grid.h"
+#include "machine/cost_profile.h"
 
 #include <cstdint>
 #include <functional>

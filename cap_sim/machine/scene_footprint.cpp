@@ -1,4 +1,4 @@
-#include "scene_footprint.h"
+#include "machine/scene_footprint.h"
 
 namespace capsim::sim {
 

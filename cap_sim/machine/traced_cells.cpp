@@ -1,7 +1,7 @@
-#include "traced_cells.h"
+#include "machine/traced_cells.h"
 
-#include "capsim/image_io.h"
 #include "capsim/host_threads.h"
+#include "capsim/image_io.h"
 #include "capsim/progress.h"
 
 #include <fmt/core.h>

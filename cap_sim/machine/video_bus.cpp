@@ -1,4 +1,4 @@
-#include "video_bus.h"
+#include "machine/video_bus.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "window_controller.h"
+#include "machine/window_controller.h"
 
 #include <stdexcept>
 

@@ -1,6 +1,6 @@
-#include "calibration_fit.h"
+#include "paper/calibration_fit.h"
 
-#include "least_squares.h"
+#include "paper/least_squares.h"
 
 #include <cmath>
 #include <stdexcept>

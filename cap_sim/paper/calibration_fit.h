@@ -5,7 +5,7 @@
 // from its simulated time and its operation counts:
 //   t(x) = t_simulated + sum over fitted costs k of (x_k - profile_k) x count_k.
 
-#include "cost_profile.h"
+#include "machine/cost_profile.h"
 
 #include "capsim/op_counts.h"
 

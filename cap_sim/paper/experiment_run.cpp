@@ -1,4 +1,4 @@
-#include "experiment_run.h"
+#include "paper/experiment_run.h"
 
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"

@@ -3,9 +3,9 @@
 // the figures the reproduction and the mode benchmarks report and the command
 // line that repeats it.
 
-#include "lattice_scene.h"
-#include "machine.h"
-#include "sim_report.h"
+#include "machine/machine.h"
+#include "paper/lattice_scene.h"
+#include "report/sim_report.h"
 
 #include <optional>
 #include <string>

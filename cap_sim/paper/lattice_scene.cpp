@@ -1,4 +1,4 @@
-#include "lattice_scene.h"
+#include "paper/lattice_scene.h"
 
 #include "capsim/parser.h"
 

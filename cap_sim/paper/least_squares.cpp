@@ -1,4 +1,4 @@
-#include "least_squares.h"
+#include "paper/least_squares.h"
 
 #include <cmath>
 #include <limits>

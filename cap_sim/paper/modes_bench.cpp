@@ -1,6 +1,6 @@
-#include "modes_bench.h"
+#include "paper/modes_bench.h"
 
-#include "svg_plot.h"
+#include "report/svg_plot.h"
 
 #include <fmt/core.h>
 

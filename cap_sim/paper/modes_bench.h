@@ -6,7 +6,7 @@
 // stored baseline is compared exactly: any change is a regression or an
 // intended change to be recorded.
 
-#include "experiment_run.h"
+#include "paper/experiment_run.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
-#include "modes_page.h"
+#include "paper/modes_page.h"
 
-#include "html_assets.h"
-#include "page_data.h"
-#include "svg_plot.h"
+#include "report/html_assets.h"
+#include "report/page_data.h"
+#include "report/svg_plot.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
-#include "repro.h"
+#include "paper/repro.h"
 
-#include "paper_figures.h"
+#include "paper/paper_figures.h"
 
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"

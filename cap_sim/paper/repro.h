@@ -4,8 +4,8 @@
 // 4-4, 4-5 and 5-1 and Graph 4-3, and the fit of the cost constants to Table
 // 4-2.
 
-#include "calibration_fit.h"
-#include "experiment_run.h"
+#include "paper/calibration_fit.h"
+#include "paper/experiment_run.h"
 
 #include <functional>
 #include <string>

@@ -1,8 +1,8 @@
 // docs/reproduction.md and its plots, from a reproduction's results.
 
-#include "paper_figures.h"
-#include "repro.h"
-#include "svg_plot.h"
+#include "paper/paper_figures.h"
+#include "paper/repro.h"
+#include "report/svg_plot.h"
 
 #include <fmt/core.h>
 

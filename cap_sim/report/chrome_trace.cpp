@@ -1,4 +1,4 @@
-#include "chrome_trace.h"
+#include "report/chrome_trace.h"
 
 namespace capsim::sim {
 

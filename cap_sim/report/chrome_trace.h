@@ -3,7 +3,7 @@
 // and chrome://tracing). Times are simulated microseconds; every span also
 // carries its exact cycles in "args".
 
-#include "timeline.h"
+#include "kernel/timeline.h"
 
 #include <nlohmann/json.hpp>
 

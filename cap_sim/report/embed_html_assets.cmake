@@ -27,7 +27,7 @@ foreach(pair "page;report.html" "style;report.css" "script;report.js" "modes_sty
   string(APPEND members "    R\"capsim_html(${text})capsim_html\",\n")
 endforeach()
 set(source "// Generated from cap_sim/report/html/ by cap_sim/report/embed_html_assets.cmake.
-#include \"html_assets.h\"
+#include \"report/html_assets.h\"
 
 namespace capsim::sim {
 

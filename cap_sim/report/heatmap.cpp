@@ -1,4 +1,4 @@
-#include "heatmap.h"
+#include "report/heatmap.h"
 
 #include "capsim/srgb.h"
 

@@ -4,7 +4,7 @@
 // with the smallest and largest busy time in simulated seconds. Colours follow
 // the viridis scale (dark blue = least busy, yellow = most busy).
 
-#include "machine.h"
+#include "machine/machine.h"
 
 #include <array>
 #include <cstdint>

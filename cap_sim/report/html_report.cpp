@@ -1,9 +1,9 @@
-#include "html_report.h"
+#include "report/html_report.h"
 
-#include "heatmap.h"
-#include "html_assets.h"
-#include "page_data.h"
-#include "sim_report.h"
+#include "report/heatmap.h"
+#include "report/html_assets.h"
+#include "report/page_data.h"
+#include "report/sim_report.h"
 
 #include "capsim/image_io.h"
 

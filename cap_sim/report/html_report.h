@@ -13,7 +13,7 @@
 // script (cap_sim/report/html/report.js) adds the player, the heat maps' hover, the
 // sortable table, the timeline and the charts.
 
-#include "machine.h"
+#include "machine/machine.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "page_data.h"
+#include "report/page_data.h"
 
 #include <fmt/core.h>
 

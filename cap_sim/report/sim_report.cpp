@@ -1,6 +1,6 @@
-#include "sim_report.h"
+#include "report/sim_report.h"
 
-#include "chrome_trace.h"
+#include "report/chrome_trace.h"
 
 #include <fmt/core.h>
 

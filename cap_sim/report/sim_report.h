@@ -4,7 +4,7 @@
 // (Max, Min, d over the cells' finish times) and Table 4-3's breakdown by process.
 // docs/simulation.md documents every field.
 
-#include "machine.h"
+#include "machine/machine.h"
 
 #include <nlohmann/json.hpp>
 

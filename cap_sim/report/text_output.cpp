@@ -1,4 +1,4 @@
-#include "text_output.h"
+#include "report/text_output.h"
 
 #include <fcntl.h>
 #include <fmt/core.h>

@@ -2,13 +2,13 @@
 // exactly with a stored baseline (docs/benchmarks.md).
 
 #include "capsim/prepared_scene.h"
-#include "cli_commands.h"
-#include "cli_options.h"
-#include "cli_outputs.h"
-#include "cli_usage.h"
-#include "modes_bench.h"
-#include "modes_page.h"
-#include "text_output.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_options.h"
+#include "cli/cli_outputs.h"
+#include "cli/cli_usage.h"
+#include "paper/modes_bench.h"
+#include "paper/modes_page.h"
+#include "report/text_output.h"
 
 #include <fmt/core.h>
 

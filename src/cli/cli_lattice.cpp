@@ -1,11 +1,11 @@
 // `capsim lattice`: writes a sphere lattice of the paper's Table 4-2 as a scene file.
 
 #include "capsim/prepared_scene.h"
-#include "cli_commands.h"
-#include "cli_options.h"
-#include "cli_outputs.h"
-#include "lattice_scene.h"
-#include "text_output.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_options.h"
+#include "cli/cli_outputs.h"
+#include "paper/lattice_scene.h"
+#include "report/text_output.h"
 
 #include <fmt/core.h>
 

@@ -1,9 +1,9 @@
-#include "cli_options.h"
+#include "cli/cli_options.h"
 
 #include "capsim/image_io.h"
 #include "capsim/memory_limit.h"
 #include "capsim/parser.h"
-#include "cli_usage.h"
+#include "cli/cli_usage.h"
 
 #include <fmt/core.h>
 

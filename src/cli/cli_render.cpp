@@ -2,9 +2,9 @@
 
 #include "capsim/image_io.h"
 #include "capsim/render.h"
-#include "cli_commands.h"
-#include "cli_options.h"
-#include "cli_outputs.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_options.h"
+#include "cli/cli_outputs.h"
 
 #include <memory>
 #include <vector>

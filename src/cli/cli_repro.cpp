@@ -2,12 +2,12 @@
 // written as docs/reproduction.md with its plots.
 
 #include "capsim/prepared_scene.h"
-#include "cli_commands.h"
-#include "cli_options.h"
-#include "cli_outputs.h"
-#include "cli_usage.h"
-#include "repro.h"
-#include "text_output.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_options.h"
+#include "cli/cli_outputs.h"
+#include "cli/cli_usage.h"
+#include "paper/repro.h"
+#include "report/text_output.h"
 
 #include <fmt/core.h>
 

@@ -1,15 +1,15 @@
 // `capsim simulate`: the CAP machine running the tracer, cycle by cycle.
 
-#include "cli_commands.h"
-#include "cli_options.h"
-#include "cli_outputs.h"
-#include "cli_usage.h"
-#include "heatmap.h"
-#include "html_report.h"
-#include "machine.h"
 #include "capsim/progress.h"
-#include "sim_report.h"
-#include "text_output.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_options.h"
+#include "cli/cli_outputs.h"
+#include "cli/cli_usage.h"
+#include "machine/machine.h"
+#include "report/heatmap.h"
+#include "report/html_report.h"
+#include "report/sim_report.h"
+#include "report/text_output.h"
 
 #include "capsim/image_io.h"
 

@@ -1,10 +1,10 @@
-#include "cli_usage.h"
+#include "cli/cli_usage.h"
 
 #include "capsim/prepared_scene.h"
 #include "capsim/voxel_grid.h"
-#include "cell_grid.h"
-#include "lattice_scene.h"
-#include "cli_options.h"
+#include "cli/cli_options.h"
+#include "machine/cell_grid.h"
+#include "paper/lattice_scene.h"
 
 #include <fmt/format.h>
 

@@ -2,8 +2,8 @@
 
 #include "capsim/scene.h"
 #include "capsim/temp_file_registry.h"
-#include "cli_commands.h"
-#include "cli_usage.h"
+#include "cli/cli_commands.h"
+#include "cli/cli_usage.h"
 
 #include <fmt/core.h>
 #include <malloc.h>

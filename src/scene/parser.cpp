@@ -20,10 +20,10 @@
 #include <optional>
 #include <span>
 
-#include "scene_args.h"
-#include "scene_lexer.h"
-#include "scene_modules.h"
-#include "scene_syntax.h"
+#include "scene/scene_args.h"
+#include "scene/scene_lexer.h"
+#include "scene/scene_modules.h"
+#include "scene/scene_syntax.h"
 
 namespace capsim {
 namespace {

@@ -1,6 +1,6 @@
 // Argument binding and typed reading for scene-file module calls.
 
-#include "scene_args.h"
+#include "scene/scene_args.h"
 
 #include <fmt/format.h>
 

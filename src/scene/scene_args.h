@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "scene_syntax.h"
+#include "scene/scene_syntax.h"
 
 namespace capsim::scene_file {
 

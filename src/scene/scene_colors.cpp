@@ -1,7 +1,7 @@
 // The colour table of OpenSCAD's color(): the CSS Color Module Level 4 named
 // colours (the 147 SVG names plus rebeccapurple) and OpenSCAD's "transparent".
 
-#include "scene_colors.h"
+#include "scene/scene_colors.h"
 
 #include <algorithm>
 #include <cmath>

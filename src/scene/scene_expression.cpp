@@ -2,7 +2,7 @@
 // its value.cc defines them, built-in functions as its func.cc does, and its
 // degree trigonometry (degree_trig.cc).
 
-#include "scene_expression.h"
+#include "scene/scene_expression.h"
 
 #include <fmt/format.h>
 
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <limits>
 
-#include "scene_args.h"
+#include "scene/scene_args.h"
 
 namespace capsim::scene_file {
 namespace {

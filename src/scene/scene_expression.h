@@ -9,7 +9,7 @@
 #include <span>
 #include <string_view>
 
-#include "scene_syntax.h"
+#include "scene/scene_syntax.h"
 
 namespace capsim::scene_file {
 

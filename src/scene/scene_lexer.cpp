@@ -1,7 +1,7 @@
 // Tokenizer for scene files: OpenSCAD's token shapes (identifiers including
 // $-variables, numbers, strings, punctuation) plus both comment styles.
 
-#include "scene_lexer.h"
+#include "scene/scene_lexer.h"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 // The meaning of each supported module call: argument checks and the maths of
 // primitives, transforms, colours, materials, camera, lights and background.
 
-#include "scene_modules.h"
+#include "scene/scene_modules.h"
 
 #include <fmt/format.h>
 
@@ -10,8 +10,8 @@
 #include <numbers>
 
 #include "capsim/scene_limits.h"
-#include "scene_args.h"
-#include "scene_colors.h"
+#include "scene/scene_args.h"
+#include "scene/scene_colors.h"
 
 namespace capsim::scene_file {
 namespace {

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "capsim/scene.h"
-#include "scene_syntax.h"
+#include "scene/scene_syntax.h"
 
 namespace capsim::scene_file {
 

@@ -1,10 +1,10 @@
 // Recursive-descent reader for the module-call structure of scene files and
 // for the expressions of their arguments, evaluated as they are read.
 
-#include "scene_syntax.h"
+#include "scene/scene_syntax.h"
 
-#include "scene_args.h"
-#include "scene_expression.h"
+#include "scene/scene_args.h"
+#include "scene/scene_expression.h"
 
 #include <fmt/format.h>
 

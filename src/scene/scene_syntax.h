@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "capsim/scene.h"
-#include "scene_lexer.h"
+#include "scene/scene_lexer.h"
 
 namespace capsim::scene_file {
 

@@ -1,7 +1,7 @@
 // `--aa` on the command line: depth 0 is the old output byte for byte; the
 // simulated screen equals the antialiased render; the EXR's samples channel.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <OpenImageIO/imageio.h>
 

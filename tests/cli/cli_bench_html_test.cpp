@@ -4,7 +4,7 @@
 // figure it lists it; a path that cannot be written is a usage error before
 // any run, and nothing is written.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // same animation, go through the sequence pipeline (numbered outputs, one
 // camera, simulate equal to render), and one frame is numbered too.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <OpenImageIO/imageio.h>
 

@@ -2,7 +2,7 @@
 // message (exit 1, nothing written) or rendered, never a crash, a cut message
 // or a blank image with exit 0. Large inputs are generated here, not stored.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <OpenImageIO/imageio.h>
 

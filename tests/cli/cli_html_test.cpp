@@ -3,8 +3,8 @@
 // host's wall time changes from run to run; a missing directory fails before
 // any work.
 
-#include "cli_run.h"
-#include "html_page.h"
+#include "support/cli_run.h"
+#include "support/html_page.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // A run whose image buffers would not fit in memory is refused before any work,
 // with the estimate and the limit; --max-memory sets the limit.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 using namespace capsim::testing;
 

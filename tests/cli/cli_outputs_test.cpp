@@ -3,7 +3,7 @@
 // exists and can be written), all are written under temporary names and put in
 // place only once all are complete, and a write error names the real reason.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <sys/stat.h>
 

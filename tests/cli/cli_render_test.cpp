@@ -1,7 +1,7 @@
 // `capsim render` end to end: outputs, option errors, and the invariances the
 // tracer promises (grid size and thread count never change the image).
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <OpenImageIO/imageio.h>
 #include <sys/wait.h>

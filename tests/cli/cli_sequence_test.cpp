@@ -2,7 +2,7 @@
 // run, written under OpenSCAD's numbering; simulate's frames equal render's;
 // nothing is written when any frame fails; one camera frames the sequence.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"

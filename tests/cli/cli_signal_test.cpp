@@ -1,7 +1,7 @@
 // A signal that ends capsim while its outputs are pending removes their
 // temporary files: the process still ends by that signal, and leaves nothing.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <fcntl.h>
 #include <signal.h>

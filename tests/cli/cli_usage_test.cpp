@@ -2,7 +2,7 @@
 // line that names the option (or command) at fault and what it accepts; nothing
 // is written. Scene errors keep status 1 (cli_render_test.cpp).
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 using namespace capsim::testing;
 

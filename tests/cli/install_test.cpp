@@ -1,7 +1,7 @@
 // cmake --install puts the program, its documentation and the sample scenes
 // under the prefix, and the installed program runs.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 using namespace capsim::testing;
 

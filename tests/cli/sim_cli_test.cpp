@@ -2,7 +2,7 @@
 // every output is byte-identical across runs and host thread counts, and bad
 // options fail with a message.
 
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 
 #include "capsim/image_io.h"
 #include "capsim/srgb.h"
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

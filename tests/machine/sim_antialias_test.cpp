@@ -2,10 +2,10 @@
 // delivers what every cell needs, with exact timing; the screen equals the
 // tracer's antialiased render; the load spread on BALLS.
 
-#include "corner_exchange.h"
-#include "machine.h"
-#include "sim_report.h"
-#include "sim_test_profile.h"
+#include "machine/corner_exchange.h"
+#include "machine/machine.h"
+#include "report/sim_report.h"
+#include "support/sim_test_profile.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"

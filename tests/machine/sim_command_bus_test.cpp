@@ -1,7 +1,7 @@
 // The command bus: transfer cycles and the arbitration policy.
 
-#include "command_bus.h"
-#include "sim_test_profile.h"
+#include "machine/command_bus.h"
+#include "support/sim_test_profile.h"
 
 #include <gtest/gtest.h>
 

@@ -4,8 +4,8 @@
 // subdivision) ends; in every mode, on several grids, in both screen formats,
 // with antialiasing and over a sequence of frames.
 
-#include "machine.h"
-#include "sequence_builders.h"
+#include "machine/machine.h"
+#include "support/sequence_builders.h"
 
 #include "capsim/parser.h"
 

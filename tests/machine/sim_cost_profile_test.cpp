@@ -1,8 +1,8 @@
 // Cost profiles: the shipped files, unit conversion, strict parsing, and the
 // cycle arithmetic of a pixel and of voxel generation.
 
-#include "cost_profile.h"
-#include "heatmap.h"
+#include "machine/cost_profile.h"
+#include "report/heatmap.h"
 
 #include "capsim/image_io.h"
 

@@ -2,8 +2,8 @@
 // overflow's message, and the event kernel refusing an event beyond the last
 // countable cycle.
 
-#include "cycles.h"
-#include "event_kernel.h"
+#include "kernel/cycles.h"
+#include "kernel/event_kernel.h"
 
 #include <gtest/gtest.h>
 

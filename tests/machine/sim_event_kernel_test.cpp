@@ -1,7 +1,7 @@
 // The discrete-event kernel: event order, processes, mailboxes.
 
-#include "event_kernel.h"
-#include "mailbox.h"
+#include "kernel/event_kernel.h"
+#include "kernel/mailbox.h"
 
 #include <gtest/gtest.h>
 

@@ -2,9 +2,9 @@
 // against the tracer alone, determinism across host threads, memory refusal, and
 // the load spread of the three pixel modes on BALLS.
 
-#include "frame_protocol.h"
-#include "machine.h"
-#include "sim_report.h"
+#include "machine/frame_protocol.h"
+#include "machine/machine.h"
+#include "report/sim_report.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"

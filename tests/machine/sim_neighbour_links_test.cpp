@@ -2,8 +2,8 @@
 // and the synthetic exchange of the antialiasing phase (§3.3): every cell sends a
 // message to its right, lower and lower-right neighbours.
 
-#include "neighbour_links.h"
-#include "sim_test_profile.h"
+#include "machine/neighbour_links.h"
+#include "support/sim_test_profile.h"
 
 #include <gtest/gtest.h>
 

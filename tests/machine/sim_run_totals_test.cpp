@@ -1,9 +1,9 @@
 // What a run reports beyond times: the operations every cell paid for, the
 // host's voxel-generation counts, and the command bus's traffic.
 
-#include "frame_protocol.h"
-#include "machine.h"
-#include "sim_test_profile.h"
+#include "machine/frame_protocol.h"
+#include "machine/machine.h"
+#include "support/sim_test_profile.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"

@@ -1,8 +1,8 @@
 // The two screen formats of the machine: an 8-bit run (what a PNG needs) gives
 // the same simulation and the sRGB encoding of the float run's screen.
 
-#include "machine.h"
-#include "sim_report.h"
+#include "machine/machine.h"
+#include "report/sim_report.h"
 
 #include "capsim/image_io.h"
 #include "capsim/parser.h"

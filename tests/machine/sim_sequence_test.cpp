@@ -1,9 +1,9 @@
 // Runs of several frames: the frame-averaged dot patterns, the barrier between
 // frames, the groups of frame averaging, and determinism.
 
-#include "machine.h"
-#include "sim_report.h"
-#include "sequence_builders.h"
+#include "machine/machine.h"
+#include "report/sim_report.h"
+#include "support/sequence_builders.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"

@@ -7,7 +7,7 @@
 // size of the numbers both sides compute with. A disagreement is excused only at
 // a grazing configuration, where the exact answer turns on a rounding error.
 
-#include "oracle_roth.h"
+#include "oracle/oracle_roth.h"
 
 #include "capsim/tracer.h"
 

@@ -12,7 +12,7 @@
 // primitive's whole-line interval and reports no hit, so traversal goes on and
 // every primitive along the ray is met.
 
-#include "oracle_geometry.h"
+#include "oracle/oracle_geometry.h"
 
 #include <embree3/rtcore.h>
 

@@ -4,7 +4,7 @@
 // distributions, whose output may differ between library versions), so every run
 // tests the same trees and rays.
 
-#include "oracle_geometry.h"
+#include "oracle/oracle_geometry.h"
 
 #include "capsim/ray.h"
 #include "capsim/scene.h"

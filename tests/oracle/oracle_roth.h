@@ -6,7 +6,7 @@
 // the visible surface. Nothing is shared with the tracer's bottom-up status tree
 // (Algorithm-4), which it judges: no incremental state, no partial evaluation.
 
-#include "oracle_embree.h"
+#include "oracle/oracle_embree.h"
 
 #include "capsim/scene.h"
 

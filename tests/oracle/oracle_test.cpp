@@ -5,11 +5,11 @@
 // status-tree tracer. docs/testing.md ("Oracle test") states the tolerances and
 // what counts as grazing.
 
-#include "oracle_compare.h"
-#include "oracle_csg_text.h"
-#include "oracle_embree.h"
-#include "oracle_random.h"
-#include "oracle_roth.h"
+#include "oracle/oracle_compare.h"
+#include "oracle/oracle_csg_text.h"
+#include "oracle/oracle_embree.h"
+#include "oracle/oracle_random.h"
+#include "oracle/oracle_roth.h"
 
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"

@@ -5,10 +5,10 @@
 // The 1-division runs of the large lattices trace 3e9 intersections on the
 // host: a minute or so on two cores.
 
-#include "cost_profile.h"
-#include "lattice_scene.h"
-#include "paper_figures.h"
-#include "repro.h"
+#include "machine/cost_profile.h"
+#include "paper/lattice_scene.h"
+#include "paper/paper_figures.h"
+#include "paper/repro.h"
 
 #include <gtest/gtest.h>
 

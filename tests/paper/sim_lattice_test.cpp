@@ -1,8 +1,8 @@
 // The sphere lattices of Table 4-2: their shapes, their scene files (written by
 // `capsim lattice`, read back unchanged), and the one view all share.
 
-#include "cli_run.h"
-#include "lattice_scene.h"
+#include "paper/lattice_scene.h"
+#include "support/cli_run.h"
 
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"

@@ -1,7 +1,7 @@
 // Non-negative least squares and the calibration fit built on it.
 
-#include "calibration_fit.h"
-#include "least_squares.h"
+#include "paper/calibration_fit.h"
+#include "paper/least_squares.h"
 
 #include <gtest/gtest.h>
 

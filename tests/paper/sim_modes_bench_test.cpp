@@ -3,8 +3,8 @@
 // fails with a table of old, new and their ratio; --update rewrites the
 // baseline and says what moved.
 
-#include "cli_run.h"
-#include "modes_bench.h"
+#include "paper/modes_bench.h"
+#include "support/cli_run.h"
 
 #include <gtest/gtest.h>
 

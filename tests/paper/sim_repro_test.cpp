@@ -3,9 +3,9 @@
 // prints repeating its runs. The full reproduction is `capsim repro` at the
 // paper's 512 x 512 (docs/reproduction.md).
 
-#include "cli_run.h"
-#include "paper_figures.h"
-#include "repro.h"
+#include "paper/paper_figures.h"
+#include "paper/repro.h"
+#include "support/cli_run.h"
 
 #include <gtest/gtest.h>
 

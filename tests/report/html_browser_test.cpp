@@ -7,15 +7,15 @@
 // launches in all. Skipped where Chromium is not installed (Debian package
 // chromium; .ci/run installs it).
 
-#include "cli_run.h"
-#include "html_page.h"
+#include "support/cli_run.h"
+#include "support/html_page.h"
 
-#include "html_report.h"
-#include "machine.h"
-#include "modes_bench.h"
-#include "modes_page.h"
-#include "sequence_builders.h"
-#include "sim_report.h"
+#include "machine/machine.h"
+#include "paper/modes_bench.h"
+#include "paper/modes_page.h"
+#include "report/html_report.h"
+#include "report/sim_report.h"
+#include "support/sequence_builders.h"
 
 #include "capsim/parser.h"
 

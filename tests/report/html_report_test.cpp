@@ -4,14 +4,14 @@
 // early; its completion data unpacks to the run's completion cycles; its
 // images are the run's; its essentials are plain HTML; its size.
 
-#include "html_page.h"
+#include "support/html_page.h"
 
-#include "heatmap.h"
-#include "html_report.h"
-#include "machine.h"
-#include "page_data.h"
-#include "sequence_builders.h"
-#include "sim_report.h"
+#include "machine/machine.h"
+#include "report/heatmap.h"
+#include "report/html_report.h"
+#include "report/page_data.h"
+#include "report/sim_report.h"
+#include "support/sequence_builders.h"
 
 #include "capsim/image_io.h"
 #include "capsim/parser.h"

@@ -5,7 +5,7 @@
 
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"
-#include "scene_builders.h"
+#include "support/scene_builders.h"
 
 #include <memory>
 #include <utility>

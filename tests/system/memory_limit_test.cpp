@@ -3,7 +3,7 @@
 
 #include "capsim/memory_limit.h"
 #include "capsim/render.h"
-#include "machine.h"
+#include "machine/machine.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // PendingFile: an output that appears whole or not at all.
 
 #include "capsim/pending_file.h"
-#include "cli_run.h"
+#include "support/cli_run.h"
 
 #include <stdexcept>
 

@@ -5,7 +5,7 @@
 #include "capsim/antialias.h"
 #include "capsim/parser.h"
 #include "capsim/render.h"
-#include "scene_builders.h"
+#include "support/scene_builders.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "capsim/render.h"
 #include "capsim/status_tree.h"
 #include "capsim/tracer.h"
-#include "scene_builders.h"
+#include "support/scene_builders.h"
 
 #include <gtest/gtest.h>
 
