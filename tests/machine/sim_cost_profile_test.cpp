@@ -2,9 +2,6 @@
 // cycle arithmetic of a pixel and of voxel generation.
 
 #include "machine/cost_profile.h"
-#include "report/heatmap.h"
-
-#include "capsim/image_io.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +9,6 @@
 
 #include <array>
 #include <limits>
-
 #include <stdexcept>
 #include <string>
 
@@ -272,18 +268,6 @@ TEST(CostProfile, BreakdownSumsBeyondTheCounterThrowAndLeaveTheSumUnchanged) {
   EXPECT_THROW(a += b, CycleOverflow);
   EXPECT_EQ(a[CostCategory::Dda], Cycles(5));
   EXPECT_THROW(a.total(), CycleOverflow);
-}
-
-TEST(Heatmap, ViridisClampsItsArgumentAndTakesNaNAsZero) {
-  using Rgb = std::array<unsigned char, 3>;
-  EXPECT_EQ(viridis(0.0), (Rgb{68, 1, 84}));
-  EXPECT_EQ(viridis(1.0), (Rgb{253, 231, 37}));
-  EXPECT_EQ(viridis(0.5), (Rgb{33, 145, 140}));
-  EXPECT_EQ(viridis(-1e300), viridis(0.0));
-  EXPECT_EQ(viridis(1e300), viridis(1.0));
-  EXPECT_EQ(viridis(std::numeric_limits<double>::infinity()), viridis(1.0));
-  // A cell grid whose cells all did nothing divides 0 by 0.
-  EXPECT_EQ(viridis(std::numeric_limits<double>::quiet_NaN()), viridis(0.0));
 }
 
 }  // namespace

@@ -8,11 +8,10 @@
 // chromium; .ci/run installs it).
 
 #include "support/cli_run.h"
+#include "support/chromium.h"
 #include "support/html_page.h"
 
 #include "machine/machine.h"
-#include "paper/modes_bench.h"
-#include "paper/modes_page.h"
 #include "report/html_report.h"
 #include "report/sim_report.h"
 #include "support/sequence_builders.h"
@@ -36,46 +35,10 @@ namespace capsim::sim {
 namespace {
 
 using capsim::testing::data_attributes;
+using capsim::testing::dump_dom;
+using capsim::testing::find_chromium;
 using capsim::testing::read_file;
 using capsim::testing::TempDir;
-
-// The Chromium executable on PATH, or "" (CAPSIM_CHROMIUM overrides).
-std::string find_chromium() {
-  if (const char* chosen = std::getenv("CAPSIM_CHROMIUM")) return chosen;
-  const char* path = std::getenv("PATH");
-  std::stringstream dirs(path ? path : "");
-  for (std::string dir; std::getline(dirs, dir, ':');)
-    for (const char* name : {"chromium", "chromium-browser"}) {
-      const std::filesystem::path candidate = std::filesystem::path(dir) / name;
-      if (::access(candidate.c_str(), X_OK) == 0) return candidate.string();
-    }
-  return "";
-}
-
-#define SKIP_WITHOUT_CHROMIUM(chromium)                                                                   \
-  if ((chromium).empty())                                                                                 \
-  GTEST_SKIP() << "Chromium is not installed (Debian package chromium): the HTML report is not checked " \
-                  "in a browser"
-
-// Loads file://page#fragment in headless Chromium, lets its scripts run (with
-// up to ten seconds of virtual time for the images to load), and returns the
-// DOM they left; with a screenshot path, also takes a screenshot of that size.
-// Start-up can be slow on a loaded machine: the launch has two minutes.
-std::string dump_dom(const std::string& chromium, const TempDir& dir, const std::string& page,
-                     const std::string& fragment, const std::string& screenshot = "", int width = 0,
-                     int height = 0) {
-  const std::string url = "file://" + std::filesystem::absolute(page).string() + fragment;
-  std::string command = fmt::format(
-      "timeout 120 '{}' --headless --no-sandbox --disable-gpu --no-first-run --no-default-browser-check "
-      "--disable-dev-shm-usage --hide-scrollbars --user-data-dir='{}' --virtual-time-budget=10000 --dump-dom",
-      chromium, dir / "chromium-profile");
-  if (!screenshot.empty())
-    command += fmt::format(" --screenshot='{}' --window-size={},{}", screenshot, width, height);
-  command += fmt::format(" '{}' >'{}' 2>'{}'", url, dir / "dom.html", dir / "chromium.log");
-  const int status = std::system(command.c_str());
-  EXPECT_EQ(status, 0) << command << "\n" << read_file(dir / "chromium.log");
-  return read_file(dir / "dom.html");
-}
 
 PreparedScene balls(int width, int height) {
   PrepareOptions prep;
@@ -245,46 +208,6 @@ TEST(HtmlReportInBrowser, SequenceWithAntialiasingGetsItsFramesChartLinkMapAndFr
   EXPECT_EQ(number(links, "links"), r.links.size());
   EXPECT_EQ(number(links, "bytes"), link_totals(r).bytes);
   EXPECT_GT(r.links.size(), 0u);
-}
-
-TEST(ModesPageInBrowser, ScriptSortsTheTableOfRunsByTheColumnNamed) {
-  const std::string chromium = find_chromium();
-  SKIP_WITHOUT_CHROMIUM(chromium);
-  TempDir dir;
-  ModesBenchOptions options;
-  options.width = options.height = 16;
-  options.scenes_dir = std::string(CAPSIM_SOURCE_DIR) + "/scenes";
-  const ModesBench bench = run_modes_bench(options);
-  write(dir / "modes.html", modes_page(bench, {"bench/baselines/modes-16x16.json", false, true, "", {}}, "0.1.0"));
-  const std::string dom = dump_dom(chromium, dir, dir / "modes.html", "#sort=-d");
-
-  const std::size_t root = dom.find("<html");
-  const std::string html_tag = dom.substr(root, dom.find('>', root) - root);
-  EXPECT_NE(html_tag.find("data-built=\"table\""), std::string::npos) << html_tag;
-
-  // Sorted by d, most first, ties in the page's order: the rows' positions
-  // as written.
-  const auto table = data_attributes(dom, "runs-table");
-  EXPECT_EQ(number(table, "rows"), bench.runs.size());
-  EXPECT_EQ(table.at("sort-key"), "d");
-  EXPECT_EQ(table.at("sort-order"), "descending");
-  std::vector<std::size_t> index(bench.runs.size());
-  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
-  std::stable_sort(index.begin(), index.end(), [&](std::size_t a, std::size_t b) {
-    return bench.runs[a].figures.spread.deviation_percent > bench.runs[b].figures.spread.deviation_percent;
-  });
-  std::string order;
-  for (const std::size_t i : index) order += fmt::format("{}{}", order.empty() ? "" : " ", i);
-  EXPECT_EQ(table.at("order"), order);
-  ASSERT_NE(index[0], 0u) << "the sort must move rows for the test to tell";
-  // The rows themselves moved: the first in the DOM is the run with the largest d.
-  const std::size_t body = dom.find("<tbody>", dom.find("id=\"runs-table\""));
-  const std::size_t first = dom.find("<tr ", body);
-  const std::string row = dom.substr(first, dom.find("</tr>", first) - first);
-  EXPECT_NE(row.find(fmt::format("data-index=\"{}\"", index[0])), std::string::npos) << row;
-  EXPECT_NE(row.find(fmt::format("{:.2f}</td>", bench.runs[index[0]].figures.spread.deviation_percent)),
-            std::string::npos)
-      << row;
 }
 
 }  // namespace

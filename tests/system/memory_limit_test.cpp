@@ -1,9 +1,6 @@
-// The memory limits a run is checked against, and the buffer sizes it is
-// estimated from.
+// The memory limits a run is checked against.
 
 #include "capsim/memory_limit.h"
-#include "capsim/render.h"
-#include "machine/machine.h"
 
 #include <gtest/gtest.h>
 
@@ -51,40 +48,6 @@ TEST(MemoryLimit, BytesAreFormattedInBinaryUnits) {
   EXPECT_EQ(format_bytes(1024), "1.0 KiB");
   EXPECT_EQ(format_bytes(1536ull << 20), "1.5 GiB");
   EXPECT_EQ(format_bytes(16384ull * 16384 * 61), "15.2 GiB");
-}
-
-TEST(MemoryEstimate, FramebufferBytesAreWhatAFramebufferHolds) {
-  const Framebuffer fb(37, 11);
-  const std::uint64_t held = (fb.rgba.size() + fb.depth.size() + fb.id.size()) * sizeof(float);
-  EXPECT_EQ(Framebuffer::bytes(37, 11), held);
-}
-
-TEST(MemoryEstimate, SimulateHoldsWhatEachScreenFormatNeedsPerPixel) {
-  sim::MachineConfig config;
-  // An 8-bit screen: video memory (3) and screen (3) per frame, owner counts (1).
-  config.screen = sim::ScreenFormat::Srgb8;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * 7);
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 4), 640u * 480 * (4 * 6 + 1));
-  // Floats: traced samples (24) and cycles (8), the screen (24) and its float
-  // cycles (4), owner counts (1).
-  config.screen = sim::ScreenFormat::Float;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * 61);
-  // Antialiased: also samples per pixel (4 + 4), one frame's corners (24 and
-  // 8 for their cycles) and the running unit's exchange plan (3 x 12 a pixel
-  // of its frames).
-  config.aa.depth = 2;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 1), 640u * 480 * (69 + 3 * 12) + 641u * 481 * 32);
-  // Sixty-four frames with a barrier per frame: one frame's plan at a time.
-  config.screen = sim::ScreenFormat::Srgb8;
-  const std::uint64_t per_frame = 640u * 480 * (64 * 6 + 1) + 641u * 481 * 24;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), per_frame + 640u * 480 * 3 * 12);
-  // Frame averaged on 8x8 cells: a unit is 64 frames, planned at once.
-  config.frame_average = true;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64), per_frame + 64 * 640u * 480 * 3 * 12);
-  // Keeping every corner taken in, for tests: 3 x 4 a pixel of every frame.
-  config.keep_received_corners = true;
-  EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64),
-            per_frame + 64 * 640u * 480 * 3 * 12 + 64 * 640u * 480 * 3 * 4);
 }
 
 }  // namespace
