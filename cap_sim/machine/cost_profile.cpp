@@ -102,11 +102,13 @@ std::optional<std::uint64_t> ceil_mul_div(std::uint64_t a, std::uint64_t b, std:
   return static_cast<std::uint64_t>(q);
 }
 
-// n x cost, naming the operation and the profile field if the product overflows.
-Cycles times(std::uint64_t n, std::string_view operations, Cycles cost, std::string_view field) {
+// n x the term's cost, naming the operations and the profile field if the
+// product overflows.
+Cycles times(std::uint64_t n, const CostTermInfo& term, Cycles cost) {
   std::uint64_t product = 0;
   if (__builtin_mul_overflow(n, cost.count(), &product))
-    throw CycleOverflow(fmt::format("{} {} x {} ({} cycles)", n, operations, field, cost.count()));
+    throw CycleOverflow(
+        fmt::format("{} {} x {} ({} cycles)", n, term.label, profile_key(term.term), cost.count()));
   return Cycles(product);
 }
 
@@ -118,14 +120,6 @@ Cycles category_cycles(CostCategory category, Terms terms) {
   } catch (const CycleOverflow& e) {
     throw e.inside(fmt::format("{} work", to_string(category)));
   }
-}
-
-// The voxels a ray's 3DDDA visited: the set-up's first voxel and one per step.
-std::uint64_t voxels_visited(const OpCounts& ops) {
-  std::uint64_t n = 0;
-  if (__builtin_add_overflow(ops.dda_setups, ops.dda_steps, &n))
-    throw CycleOverflow(fmt::format("{} 3DDDA set-ups + {} steps voxels visited", ops.dda_setups, ops.dda_steps));
-  return n;
 }
 
 }  // namespace
@@ -165,31 +159,14 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   p.clock_hz = top.count("clock_hz");
   const std::uint64_t hz = p.clock_hz;
 
-  ObjectReader cell(top.member("cell_costs_us"), "cell_costs_us", source);
-  auto cell_us = [&](const char* key) { return cell.cycles(key, hz); };
-  p.cell.sphere_test = cell_us("sphere_test");
-  p.cell.cone_test = cell_us("cone_test");
-  p.cell.box_test = cell_us("box_test");
-  p.cell.dda_setup = cell_us("dda_setup");
-  p.cell.dda_step = cell_us("dda_step");
-  p.cell.voxel_visit = cell_us("voxel_visit");
-  p.cell.matvec = cell_us("matvec");
-  p.cell.tree_visit = cell_us("tree_visit");
-  p.cell.hit_sort = cell_us("hit_sort");
-  p.cell.shading_eval = cell_us("shading_eval");
-  p.cell.ray_other = cell_us("ray_other");
-  p.cell.pixel_write = cell_us("pixel_write");
-  p.cell.aa_square = cell_us("aa_square");
-  cell.refuse_unknown_keys();
-
-  ObjectReader host(top.member("host_costs_us"), "host_costs_us", source);
-  auto host_us = [&](const char* key) { return host.cycles(key, hz); };
-  p.host.primitive = host_us("primitive");
-  p.host.matmat = host_us("matmat");
-  p.host.matvec = host_us("matvec");
-  p.host.column = host_us("voxel_column");
-  p.host.voxel_entry = host_us("voxel_entry");
-  host.refuse_unknown_keys();
+  // Each payer's section holds its terms of kCostTerms, in microseconds.
+  for (const CostPayer payer : {CostPayer::Cell, CostPayer::Host}) {
+    const char* section = profile_section(payer);
+    ObjectReader costs(top.member(section), section, source);
+    for (const CostTermInfo& t : kCostTerms)
+      if (t.payer == payer) p.costs[t.term] = costs.cycles(t.key, hz);
+    costs.refuse_unknown_keys();
+  }
 
   ObjectReader bus(top.member("bus"), "bus", source);
   p.bus.bytes_per_second = bus.count("bytes_per_second");
@@ -245,68 +222,32 @@ std::optional<LinkTopology> parse_link_topology(const std::string& text) {
 
 const char* to_string(LinkTopology t) { return t == LinkTopology::Torus ? "torus" : "mesh"; }
 
-const char* to_string(CostCategory c) {
-  switch (c) {
-    case CostCategory::Intersection: return "intersection";
-    case CostCategory::Dda: return "3DDDA (incl. set-up)";
-    case CostCategory::Csg: return "CSG evaluation";
-    case CostCategory::VoxelGeneration: return "voxel generation";
-    case CostCategory::Other: return "other";
-  }
-  return "?";
-}
+CostBreakdown pixel_cost(const OpCounts& ops, const CostTable& c) { return work_cost(ops, 1, c); }
 
-const char* json_key(CostCategory c) {
-  switch (c) {
-    case CostCategory::Intersection: return "intersection";
-    case CostCategory::Dda: return "dda";
-    case CostCategory::Csg: return "csg";
-    case CostCategory::VoxelGeneration: return "voxel_generation";
-    case CostCategory::Other: return "other";
-  }
-  return "?";
-}
-
-CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& c) { return work_cost(ops, 1, c); }
-
-CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& c) {
+CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTable& c) {
   CostBreakdown b;
-  b[CostCategory::Intersection] = category_cycles(CostCategory::Intersection, [&] {
-    return times(ops.sphere_tests, "sphere tests", c.sphere_test, "cell_costs_us.sphere_test") +
-           times(ops.cone_tests, "cone tests", c.cone_test, "cell_costs_us.cone_test") +
-           times(ops.box_tests, "box tests", c.box_test, "cell_costs_us.box_test");
-  });
-  b[CostCategory::Dda] = category_cycles(CostCategory::Dda, [&] {
-    return times(ops.dda_setups, "3DDDA set-ups", c.dda_setup, "cell_costs_us.dda_setup") +
-           times(ops.dda_steps, "3DDDA steps", c.dda_step, "cell_costs_us.dda_step") +
-           times(voxels_visited(ops), "voxels visited", c.voxel_visit, "cell_costs_us.voxel_visit");
-  });
-  b[CostCategory::Csg] = category_cycles(CostCategory::Csg, [&] {
-    return times(ops.tree_visits, "status-tree visits", c.tree_visit, "cell_costs_us.tree_visit") +
-           times(ops.hits_sorted, "crossings sorted", c.hit_sort, "cell_costs_us.hit_sort");
-  });
-  b[CostCategory::Other] = category_cycles(CostCategory::Other, [&] {
-    return times(ops.matvec, "matrix-vector products", c.matvec, "cell_costs_us.matvec") +
-           times(ops.shading_evals, "shading evaluations", c.shading_eval,
-                 "cell_costs_us.shading_eval") +
-           times(ops.rays, "rays", c.ray_other, "cell_costs_us.ray_other") +
-           times(ops.aa_squares, "antialiasing squares", c.aa_square, "cell_costs_us.aa_square") +
-           times(pixels, "pixel writes", c.pixel_write, "cell_costs_us.pixel_write");
-  });
+  for (const CostCategoryInfo& category : kCostCategoryTable)
+    b[category.category] = category_cycles(category.category, [&] {
+      Cycles sum;
+      for (const CostTermInfo& t : kCostTerms)
+        if (t.payer == CostPayer::Cell && t.category == category.category)
+          sum += times(t.cell_count(ops, pixels), t, c[t.term]);
+      return sum;
+    });
   return b;
 }
 
-WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& c) {
-  auto t = [](std::uint64_t n, Cycles cost) { return static_cast<unsigned __int128>(n) * cost.count(); };
+WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTable& c) {
   WideBreakdown w;
-  w.cycles[static_cast<int>(CostCategory::Intersection)] =
-      t(ops.sphere_tests, c.sphere_test) + t(ops.cone_tests, c.cone_test) + t(ops.box_tests, c.box_test);
-  w.cycles[static_cast<int>(CostCategory::Dda)] = t(ops.dda_setups, c.dda_setup) + t(ops.dda_steps, c.dda_step) +
-                                                  t(ops.dda_setups, c.voxel_visit) + t(ops.dda_steps, c.voxel_visit);
-  w.cycles[static_cast<int>(CostCategory::Csg)] = t(ops.tree_visits, c.tree_visit) + t(ops.hits_sorted, c.hit_sort);
-  w.cycles[static_cast<int>(CostCategory::Other)] = t(ops.matvec, c.matvec) + t(ops.shading_evals, c.shading_eval) +
-                                                    t(ops.rays, c.ray_other) + t(ops.aa_squares, c.aa_square) +
-                                                    t(pixels, c.pixel_write);
+  for (const CostTermInfo& t : kCostTerms) {
+    if (t.payer != CostPayer::Cell) continue;
+    // The voxels visited are counted as set-ups plus steps, which cannot
+    // overflow in 128 bits.
+    const unsigned __int128 n = t.term == CostTerm::VoxelVisit
+                                    ? static_cast<unsigned __int128>(ops.dda_setups) + ops.dda_steps
+                                    : t.cell_count(ops, pixels);
+    w.cycles[static_cast<int>(t.category)] += n * c[t.term].count();
+  }
   return w;
 }
 
@@ -317,14 +258,13 @@ std::optional<CostBreakdown> WideBreakdown::narrow() const {
   return b;
 }
 
-CostBreakdown voxel_generation_cost(const VoxelGenCounts& n, const HostCosts& c) {
+CostBreakdown voxel_generation_cost(const VoxelGenCounts& n, const CostTable& c) {
   CostBreakdown b;
   b[CostCategory::VoxelGeneration] = category_cycles(CostCategory::VoxelGeneration, [&] {
-    return times(n.primitives, "primitives", c.primitive, "host_costs_us.primitive") +
-           times(n.matmat, "matrix-matrix products", c.matmat, "host_costs_us.matmat") +
-           times(n.matvec, "matrix-vector products", c.matvec, "host_costs_us.matvec") +
-           times(n.columns, "voxel columns", c.column, "host_costs_us.voxel_column") +
-           times(n.voxel_entries, "voxel entries", c.voxel_entry, "host_costs_us.voxel_entry");
+    Cycles sum;
+    for (const CostTermInfo& t : kCostTerms)
+      if (t.payer == CostPayer::Host) sum += times(t.host_count(n), t, c[t.term]);
+    return sum;
   });
   return b;
 }

@@ -5,6 +5,7 @@
 // `m380` are compiled into the binary, any other file can be loaded by path.
 
 #include "kernel/cycles.h"
+#include "machine/cost_terms.h"
 
 #include "capsim/op_counts.h"
 
@@ -17,31 +18,8 @@
 
 namespace capsim::sim {
 
-// What a cell pays per operation the tracer counts.
-struct CellCosts {
-  Cycles sphere_test, cone_test, box_test;  // Table 4-1; include carrying the ray into object space
-  Cycles dda_setup, dda_step;               // Table 4-1: Algorithm-2
-  Cycles voxel_visit;                       // fitted: the other work in each voxel a ray visits
-                                            // (its list fetched, its primitives checked against
-                                            // the mailbox): RO per voxel of equation (2)
-  Cycles matvec;                            // Table 4-1: 4x4 matrix x vector (normals)
-  Cycles tree_visit;                        // one status-tree node visited (Algorithm-4)
-  Cycles hit_sort;                          // one crossing put in order along the ray
-  Cycles shading_eval;                      // one local illumination evaluation
-  Cycles ray_other;                         // the fitted per-ray fixed work ("RO" of eq. 1-2)
-  Cycles pixel_write;                       // one pixel stored in video memory
-  Cycles aa_square;                         // antialiasing: one square's corners compared
-                                            // with the threshold and averaged
-};
-
-// What the host pays for voxel generation (Algorithm-3).
-struct HostCosts {
-  Cycles primitive;    // per primitive placed: bounding box and its projection
-  Cycles matmat;       // 4x4 matrix x matrix
-  Cycles matvec;       // 4x4 matrix x vector (box corners)
-  Cycles column;       // per X-Y voxel column: the Zmin / Zmax bounds
-  Cycles voxel_entry;  // per (voxel, primitive) entry written
-};
+// What each cost term costs, in cycles of the profile's clock (cost_terms.h).
+using CostTable = PerTerm<Cycles>;
 
 struct BusCosts {
   std::uint64_t bytes_per_second = 0;
@@ -67,8 +45,7 @@ struct CostProfile {
   std::string description;
   std::string source;  // where it was read from: a built-in name or a path
   std::uint64_t clock_hz = 0;
-  CellCosts cell;
-  HostCosts host;
+  CostTable costs;  // every term of kCostTerms, cell's and host's
   BusCosts bus;
   LinkCosts link;
   std::uint64_t cell_memory_bytes = 0;  // program + scene + voxel data must fit
@@ -91,12 +68,6 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
 CostProfile load_cost_profile(const std::string& name_or_path);
 std::vector<std::string> builtin_profile_names();
 
-// Table 4-3's processes.
-enum class CostCategory { Intersection, Dda, Csg, VoxelGeneration, Other };
-inline constexpr int kCostCategories = 5;
-const char* to_string(CostCategory c);  // "intersection", "3DDDA", ...
-const char* json_key(CostCategory c);   // "intersection", "dda", "csg", "voxel_generation", "other"
-
 // Cycles by category. total() and += throw CycleOverflow beyond 2^64 - 1 cycles.
 struct CostBreakdown {
   std::array<Cycles, kCostCategories> cycles{};
@@ -116,15 +87,16 @@ struct CostBreakdown {
   }
 };
 
-// The cycles one pixel costs a cell: each operation count times its cost, the
-// per-ray fixed work for every ray, and one video-memory write. Throws
-// CycleOverflow naming the category and, for a product, the profile field.
-CostBreakdown pixel_cost(const OpCounts& ops, const CellCosts& costs);
+// The cycles one pixel costs a cell: each cell term's count times its cost
+// (kCostTerms: the per-ray fixed work for every ray, one video-memory write,
+// ...). Throws CycleOverflow naming the category and, for a product, the
+// profile field.
+CostBreakdown pixel_cost(const OpCounts& ops, const CostTable& costs);
 
 // pixel_cost summed over `pixels` pixels whose operations add up to `ops` (it is
 // linear in the counts, with one pixel_write a pixel): the same cycles, without
 // a conversion per pixel. Throws CycleOverflow as pixel_cost.
-CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& costs);
+CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTable& costs);
 
 // The same cycles exactly, in 128 bits (they cannot overflow for counts below
 // 2^64), to decide once whether a sum fits Cycles.
@@ -139,10 +111,11 @@ struct WideBreakdown {
   // (then some category or the total would not fit).
   std::optional<CostBreakdown> narrow() const;
 };
-WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CellCosts& costs);
+WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTable& costs);
 
-// The host's cycles for Algorithm-3 (all in CostCategory::VoxelGeneration).
-// Throws CycleOverflow as pixel_cost does.
-CostBreakdown voxel_generation_cost(const VoxelGenCounts& counts, const HostCosts& costs);
+// The host's cycles for Algorithm-3: each host term's count times its cost
+// (all in CostCategory::VoxelGeneration). Throws CycleOverflow as pixel_cost
+// does.
+CostBreakdown voxel_generation_cost(const VoxelGenCounts& counts, const CostTable& costs);
 
 }  // namespace capsim::sim

@@ -137,7 +137,7 @@ FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std
                      const CostProfile& profile) {
   Cycles voxel_generation;
   try {
-    voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.host).total();
+    voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.costs).total();
   } catch (const CycleOverflow& e) {
     throw e.inside("the host's voxel generation");
   }
@@ -364,7 +364,7 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
         throw std::invalid_argument(fmt::format("frame {} is {}x{} where frame 0 is {}x{}", f, c.width, c.height,
                                                 cam.width, cam.height));
       const WindowLayout layout = frame_layout(config, cam.width, cam.height, static_cast<int>(f));
-      std::vector<TracedCell> traced = trace_cells(tracer, layout, config.profile.cell, threads,
+      std::vector<TracedCell> traced = trace_cells(tracer, layout, config.profile.costs, threads,
                                                    one ? &progress : nullptr, config.aa, config.screen,
                                                    config.completion_cycles);
       work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config.profile));

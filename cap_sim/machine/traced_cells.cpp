@@ -44,7 +44,7 @@ struct CellOverflow {
 // cell, in id order, whose work does not fit 64 bits; add is then not called.
 template <class Add>
 std::optional<CellOverflow> fold(const tbb::enumerable_thread_specific<Sums>& sums, int cell_count,
-                                 const CellCosts& costs, Add add) {
+                                 const CostTable& costs, Add add) {
   std::vector<OpCounts> ops(cell_count);
   std::vector<std::uint64_t> items(cell_count, 0);
   for (const Sums& sum : sums)
@@ -66,7 +66,7 @@ std::optional<CellOverflow> fold(const tbb::enumerable_thread_specific<Sums>& su
 // A cell's work does not fit 64 bits. Names the first pixel in screen order
 // whose own cost does not fit (traced again: tracing is pure), or else the
 // cell and its exact sum; the same on any thread count.
-[[noreturn]] void refuse_overflow(const Tracer& tracer, const WindowLayout& layout, const CellCosts& costs,
+[[noreturn]] void refuse_overflow(const Tracer& tracer, const WindowLayout& layout, const CostTable& costs,
                                   const CellOverflow& cell, const char* items) {
   Tracer::Scratch scratch(tracer.scene());
   for (int y = 0; y < layout.height(); ++y)
@@ -86,7 +86,7 @@ std::optional<CellOverflow> fold(const tbb::enumerable_thread_specific<Sums>& su
 // One item's cycles for a float screen's per-pixel channel, at most
 // Cycles::kMax; a cost beyond that makes its cell's sum overflow too, which
 // fold refuses.
-std::uint64_t saturated_cycles(const OpCounts& ops, const CellCosts& costs) {
+std::uint64_t saturated_cycles(const OpCounts& ops, const CostTable& costs) {
   const unsigned __int128 total = wide_work_cost(ops, 1, costs).total();
   return total > Cycles::kMax ? Cycles::kMax : static_cast<std::uint64_t>(total);
 }
@@ -121,7 +121,7 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
 // (phase 1), then every pixel resolved from its corners and charged to its
 // cell (phase 3).
 std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const WindowLayout& layout,
-                                                const CellCosts& costs, int threads,
+                                                const CostTable& costs, int threads,
                                                 Progress* progress, const AntialiasOptions& aa,
                                                 ScreenFormat format, bool keep_write_cycles) {
   const int cell_count = layout.grid().cell_count();
@@ -210,7 +210,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
 }  // namespace
 
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
-                                    const CellCosts& costs, int threads, Progress* progress,
+                                    const CostTable& costs, int threads, Progress* progress,
                                     const AntialiasOptions& aa, ScreenFormat format, bool keep_write_cycles) {
   if (aa.depth > 0)
     return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format, keep_write_cycles);

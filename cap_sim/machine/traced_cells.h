@@ -50,7 +50,7 @@ struct TracedCell {
 // progress may be null; it advances by render_work(width, height, aa).
 // keep_write_cycles: fill TracedCell::write_cycles.
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
-                                    const CellCosts& costs, int threads, Progress* progress,
+                                    const CostTable& costs, int threads, Progress* progress,
                                     const AntialiasOptions& aa = {},
                                     ScreenFormat format = ScreenFormat::Float, bool keep_write_cycles = false);
 

@@ -7,50 +7,19 @@
 
 namespace capsim::sim {
 
-std::vector<FittedCost> all_fitted_costs() {
-  return {FittedCost::RayOther,      FittedCost::VoxelVisit, FittedCost::TreeVisit, FittedCost::HitSort,
-          FittedCost::HostPrimitive, FittedCost::HostColumn, FittedCost::HostEntry};
+std::vector<CostTerm> all_fitted_costs() {
+  return {CostTerm::RayOther,      CostTerm::VoxelVisit, CostTerm::TreeVisit, CostTerm::HitSort,
+          CostTerm::HostPrimitive, CostTerm::HostColumn, CostTerm::HostEntry};
 }
 
-const char* profile_key(FittedCost c) {
-  switch (c) {
-    case FittedCost::RayOther: return "cell_costs_us.ray_other";
-    case FittedCost::VoxelVisit: return "cell_costs_us.voxel_visit";
-    case FittedCost::TreeVisit: return "cell_costs_us.tree_visit";
-    case FittedCost::HitSort: return "cell_costs_us.hit_sort";
-    case FittedCost::HostPrimitive: return "host_costs_us.primitive";
-    case FittedCost::HostColumn: return "host_costs_us.voxel_column";
-    case FittedCost::HostEntry: return "host_costs_us.voxel_entry";
-  }
-  return "?";
+double charged_count(CostTerm c, const FitCell& cell) {
+  const CostTermInfo& t = info(c);
+  return static_cast<double>(t.payer == CostPayer::Cell ? t.cell_count(cell.ops, cell.pixels)
+                                                        : t.host_count(cell.voxels));
 }
 
-double charged_count(FittedCost c, const FitCell& cell) {
-  const OpCounts& o = cell.ops;
-  switch (c) {
-    case FittedCost::RayOther: return static_cast<double>(o.rays);
-    case FittedCost::VoxelVisit: return static_cast<double>(o.dda_setups) + static_cast<double>(o.dda_steps);
-    case FittedCost::TreeVisit: return static_cast<double>(o.tree_visits);
-    case FittedCost::HitSort: return static_cast<double>(o.hits_sorted);
-    case FittedCost::HostPrimitive: return static_cast<double>(cell.voxels.primitives);
-    case FittedCost::HostColumn: return static_cast<double>(cell.voxels.columns);
-    case FittedCost::HostEntry: return static_cast<double>(cell.voxels.voxel_entries);
-  }
-  return 0;
-}
-
-double profile_value_us(FittedCost c, const CostProfile& p) {
-  Cycles cycles;
-  switch (c) {
-    case FittedCost::RayOther: cycles = p.cell.ray_other; break;
-    case FittedCost::VoxelVisit: cycles = p.cell.voxel_visit; break;
-    case FittedCost::TreeVisit: cycles = p.cell.tree_visit; break;
-    case FittedCost::HitSort: cycles = p.cell.hit_sort; break;
-    case FittedCost::HostPrimitive: cycles = p.host.primitive; break;
-    case FittedCost::HostColumn: cycles = p.host.column; break;
-    case FittedCost::HostEntry: cycles = p.host.voxel_entry; break;
-  }
-  return static_cast<double>(cycles.count()) * 1e6 / static_cast<double>(p.clock_hz);
+double profile_value_us(CostTerm c, const CostProfile& p) {
+  return static_cast<double>(p.costs[c].count()) * 1e6 / static_cast<double>(p.clock_hz);
 }
 
 namespace {
@@ -67,7 +36,7 @@ double rms_relative(const std::vector<FitCell>& cells, const std::vector<double>
 }  // namespace
 
 FitResult fit_costs(const std::vector<FitCell>& cells, const CostProfile& profile,
-                    const std::vector<FittedCost>& fitted) {
+                    const std::vector<CostTerm>& fitted) {
   if (cells.empty() || fitted.empty()) throw std::invalid_argument("a fit needs cells and costs to fit");
   // Row i: sum_k x_k count_ik / paper_i = 1 - (t_i - sum_k profile_k count_ik) / paper_i,
   // x in microseconds.
@@ -76,7 +45,7 @@ FitResult fit_costs(const std::vector<FitCell>& cells, const CostProfile& profil
   for (const FitCell& cell : cells) {
     std::vector<double> row;
     double rest = cell.simulated_seconds;
-    for (FittedCost c : fitted) {
+    for (CostTerm c : fitted) {
       const double n = charged_count(c, cell);
       row.push_back(n * 1e-6 / cell.paper_seconds);
       rest -= profile_value_us(c, profile) * n * 1e-6;

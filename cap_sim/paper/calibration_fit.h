@@ -14,36 +14,27 @@
 
 namespace capsim::sim {
 
-// The costs a fit may determine.
-enum class FittedCost {
-  RayOther,       // cell_costs_us.ray_other, per ray
-  VoxelVisit,     // cell_costs_us.voxel_visit, per voxel visited
-  TreeVisit,      // cell_costs_us.tree_visit, per status-tree node visited
-  HitSort,        // cell_costs_us.hit_sort, per crossing sorted
-  HostPrimitive,  // host_costs_us.primitive
-  HostColumn,     // host_costs_us.voxel_column
-  HostEntry,      // host_costs_us.voxel_entry
-};
-inline constexpr int kFittedCosts = 7;
-std::vector<FittedCost> all_fitted_costs();
-const char* profile_key(FittedCost c);  // "cell_costs_us.ray_other", ...
+// The costs Table 4-2's fit may determine: those Table 4-1 does not give,
+// in the order the reproduction prints them.
+std::vector<CostTerm> all_fitted_costs();
 
 // One measured cell: the published time and a simulation of it on one cell
 // (its operations are what that cell and the host did).
 struct FitCell {
   double paper_seconds = 0;
   double simulated_seconds = 0;
-  OpCounts ops;           // summed over the cells
-  VoxelGenCounts voxels;  // the host's
+  OpCounts ops;              // summed over the cells
+  std::uint64_t pixels = 0;  // written, summed over the cells
+  VoxelGenCounts voxels;     // the host's
 };
 
-// How many operations cost c is charged for in a cell.
-double charged_count(FittedCost c, const FitCell& cell);
-// The profile's value of cost c, in microseconds (its cycles / clock).
-double profile_value_us(FittedCost c, const CostProfile& profile);
+// How many operations term c is charged for in a cell.
+double charged_count(CostTerm c, const FitCell& cell);
+// The profile's value of term c, in microseconds (its cycles / clock).
+double profile_value_us(CostTerm c, const CostProfile& profile);
 
 struct FitResult {
-  std::vector<FittedCost> fitted;
+  std::vector<CostTerm> fitted;
   std::vector<double> value_us;           // per fitted cost, >= 0
   std::vector<double> predicted_seconds;  // per cell, with the fitted values
   double rms_relative_error = 0;          // sqrt(mean of (predicted / paper - 1)^2)
@@ -52,7 +43,7 @@ struct FitResult {
 // Non-negative least squares of (t / paper - 1) over the cells, the costs in
 // `fitted` free and every other cost at the profile's value.
 FitResult fit_costs(const std::vector<FitCell>& cells, const CostProfile& profile,
-                    const std::vector<FittedCost>& fitted);
+                    const std::vector<CostTerm>& fitted);
 
 // The same quantities for the profile as it is (nothing fitted).
 FitResult evaluate_costs(const std::vector<FitCell>& cells);

@@ -59,7 +59,10 @@ RunFigures run_experiment(const RunSpec& spec, int threads) {
   f.frame = r.frame;
   f.spread = load_spread(r);
   f.breakdown = r.breakdown;
-  for (const CellReport& c : r.cells) f.ops += c.ops;
+  for (const CellReport& c : r.cells) {
+    f.ops += c.ops;
+    f.pixels += c.pixels;
+  }
   f.voxels = r.voxel_counts;
   f.bus = r.bus;
   f.links = link_totals(r);

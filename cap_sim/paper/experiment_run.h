@@ -31,6 +31,7 @@ struct RunFigures {
   LoadSpread spread;
   CostBreakdown breakdown;  // every cell's work and the host's voxel generation
   OpCounts ops;             // summed over the cells
+  std::uint64_t pixels = 0; // written, summed over the cells
   VoxelGenCounts voxels;    // the host's
   BusTotals bus;
   LinkTotals links;

@@ -12,7 +12,7 @@
 
 namespace capsim::sim {
 
-std::vector<FittedCost> shipped_fitted_costs() { return {FittedCost::RayOther, FittedCost::VoxelVisit}; }
+std::vector<CostTerm> shipped_fitted_costs() { return {CostTerm::RayOther, CostTerm::VoxelVisit}; }
 
 namespace {
 
@@ -63,6 +63,7 @@ Table42 table_4_2(const Runner& runner) {
       cell.paper_seconds = paper::kTable42Seconds[row][col];
       cell.simulated_seconds = t.cells[row][col].frame_seconds();
       cell.ops = t.cells[row][col].ops;
+      cell.pixels = t.cells[row][col].pixels;
       cell.voxels = t.cells[row][col].voxels;
       t.fit_cells.push_back(cell);
     }

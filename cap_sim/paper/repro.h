@@ -74,7 +74,7 @@ struct ReproResult {
 
 // The costs the shipped profiles fit to Table 4-2 (docs/calibration.md says
 // why these and not the others).
-std::vector<FittedCost> shipped_fitted_costs();
+std::vector<CostTerm> shipped_fitted_costs();
 
 // Table 4-2 alone: its 35 runs and the fits.
 Table42 run_table_4_2(const ReproOptions& options);

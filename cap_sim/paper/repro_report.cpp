@@ -13,9 +13,6 @@ namespace capsim::sim {
 
 namespace {
 
-constexpr const char* kProcessNames[5] = {"intersection", "3DDDA (incl. set-up)", "CSG evaluation",
-                                          "voxel generation", "other"};
-
 // Seconds as the paper prints them, a little finer.
 std::string secs(double s) {
   if (s >= 100) return fmt::format("{:.0f}", s);
@@ -121,7 +118,7 @@ std::vector<TargetCheck> reproduction_targets(const ReproResult& r) {
         if (std::abs(diff) <= 10) {
           ++within;
         } else {
-          misses += fmt::format("{}{} at {}: {:.1f} % ({:.1f} %)", misses.empty() ? "" : "; ", kProcessNames[k],
+          misses += fmt::format("{}{} at {}: {:.1f} % ({:.1f} %)", misses.empty() ? "" : "; ", kCostCategoryTable[k].name,
                                 paper::kTable43Divisions[i], share, paper::kTable43Percent[i][k]);
         }
       }
@@ -225,13 +222,13 @@ void table_4_2_section(std::string& md, const ReproResult& r, const std::string&
       t.shipped_fit.fitted.size() == 2 ? "the per-ray and the per-voxel other work" : "costs", paper::kCapOverM380);
   const CostProfile m380 = load_cost_profile("m380");
   md += "| fit | rms relative error |";
-  for (FittedCost c : all_fitted_costs()) md += fmt::format(" `{}` us |", profile_key(c));
+  for (CostTerm c : all_fitted_costs()) md += fmt::format(" `{}` us |", profile_key(c));
   md += "\n|---|---|";
-  for (int k = 0; k < kFittedCosts; ++k) md += "---|";
+  for (std::size_t k = 0; k < all_fitted_costs().size(); ++k) md += "---|";
   md += "\n";
   auto fit_row = [&](const char* name, const FitResult& f) {
     md += fmt::format("| {} | {:.3f} |", name, f.rms_relative_error);
-    for (FittedCost c : all_fitted_costs()) {
+    for (CostTerm c : all_fitted_costs()) {
       const auto it = std::find(f.fitted.begin(), f.fitted.end(), c);
       if (it == f.fitted.end())
         md += fmt::format(" {:g} |", profile_value_us(c, m380));
@@ -262,7 +259,7 @@ void table_4_2_section(std::string& md, const ReproResult& r, const std::string&
   md += "\n### Where it misses, and why\n\n";
   const double p16 = paper::kTable42Seconds[0][0] / rays * 1e6;
   const double p512 = paper::kTable42Seconds[1][0] / rays * 1e6;
-  const double sphere = static_cast<double>(m380.cell.sphere_test.count()) * 1e6 / static_cast<double>(m380.clock_hz);
+  const double sphere = static_cast<double>(m380.costs[CostTerm::SphereTest].count()) * 1e6 / static_cast<double>(m380.clock_hz);
   md += fmt::format(
       "- **The 16-object row cannot share one geometry with the 512-object row.** With {} rays, the paper's "
       "1-division time for 16 objects ({} s) is {:.0f} us a ray: the 16 sphere tests ({:.0f} us) and most of "
@@ -294,7 +291,7 @@ void table_4_2_section(std::string& md, const ReproResult& r, const std::string&
       "largest lattice's sphere tests {:.1f}x (a ray that meets it visits {:.2f} of the 2 voxels along its "
       "path on average) where the paper's time falls {:.1f}x, so the 1-to-2 step is steeper than the "
       "paper's.\n\n",
-      profile_value_us(FittedCost::RayOther, m380), low2, high2,
+      profile_value_us(CostTerm::RayOther, m380), low2, high2,
       static_cast<double>(t.cells[4][0].ops.intersection_tests()) /
           static_cast<double>(std::max<std::uint64_t>(t.cells[4][1].ops.intersection_tests(), 1)),
       static_cast<double>(t.cells[4][1].ops.dda_setups + t.cells[4][1].ops.dda_steps) /
@@ -322,7 +319,7 @@ void table_4_3_section(std::string& md, const ReproResult& r) {
   for (int i = 0; i < 9; ++i) md += "---|";
   md += "\n";
   for (int k = 0; k < 5; ++k) {
-    md += fmt::format("| {} |", kProcessNames[k]);
+    md += fmt::format("| {} |", kCostCategoryTable[k].name);
     for (int i = 0; i < 3; ++i) {
       const double s = category_seconds(t.runs[i], k), share = 100 * s / total_seconds(t.runs[i]);
       md += fmt::format(" {} ({:.1f} %) | {} ({:.1f} %) | {:+.1f} |", secs(s), share, paper::kTable43Seconds[i][k],
@@ -350,7 +347,7 @@ void table_4_3_section(std::string& md, const ReproResult& r) {
       ratio(total_seconds(n2), paper::kTable43Total[0]), ratio(total_seconds(t.runs[1]), paper::kTable43Total[1]),
       excess > 0 ? 100 * tests_excess / excess : 0.0, tests2 / 1e6,
       tests2 / static_cast<double>(n2.ops.primary_rays), tests_per_grid_ray(t.runs[0]), tests_per_grid_ray(t.runs[1]),
-      tests_per_grid_ray(t.runs[2]), secs(category_seconds(n2, 4)), profile_value_us(FittedCost::RayOther, m380),
+      tests_per_grid_ray(t.runs[2]), secs(category_seconds(n2, 4)), profile_value_us(CostTerm::RayOther, m380),
       n2.ops.rays);
   md += "| divisions | command |\n|---|---|\n";
   for (int i = 0; i < 3; ++i) md += fmt::format("| {} | {} |\n", paper::kTable43Divisions[i], code(t.runs[i].command));

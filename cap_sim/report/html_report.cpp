@@ -45,11 +45,6 @@ std::pair<std::uint64_t, std::uint64_t> completion_range(const FrameScreen& s) {
   return {*lo, *hi};
 }
 
-constexpr std::pair<CostCategory, const char*> kProcesses[] = {
-    {CostCategory::Intersection, "intersection"}, {CostCategory::Dda, "3DDDA (incl. set-up)"},
-    {CostCategory::Csg, "CSG evaluation"},        {CostCategory::VoxelGeneration, "voxel generation"},
-    {CostCategory::Other, "other"}};
-
 std::string header_section(const SimulationResult& r, const RunFacts& facts) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   const bool sequence = r.screens.size() > 1;
@@ -223,13 +218,13 @@ std::string breakdown_section(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   const double total = r.breakdown.total().seconds(hz);
   std::string rows;
-  for (const auto& [category, name] : kProcesses) {
-    const Cycles c = r.breakdown[category];
+  for (const CostCategoryInfo& process : kCostCategoryTable) {
+    const Cycles c = r.breakdown[process.category];
     const double percent = total > 0 ? 100.0 * c.seconds(hz) / total : 0.0;
     rows += fmt::format(
         "<tr data-process=\"{}\"><th>{}</th><td title=\"{} cycles\">{:.3f} s</td><td>{:.1f} %</td>"
         "<td class=\"bar-cell\"><span class=\"bar\" style=\"width:{:.1f}%\"></span></td></tr>\n",
-        json_key(category), name, grouped(c.count()), c.seconds(hz), percent, percent);
+        process.json_key, process.name, grouped(c.count()), c.seconds(hz), percent, percent);
   }
   return fmt::format(
       "<section id=\"breakdown\">\n<h2>Time by process</h2>\n<table id=\"breakdown-table\" class=\"breakdown\">\n"

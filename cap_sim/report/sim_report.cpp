@@ -43,10 +43,6 @@ std::string format_sequence(const SimulationResult& r) {
   return out;
 }
 
-constexpr CostCategory kCategories[] = {CostCategory::Intersection, CostCategory::Dda,
-                                        CostCategory::Csg, CostCategory::VoxelGeneration,
-                                        CostCategory::Other};
-
 }  // namespace
 
 namespace {
@@ -99,9 +95,9 @@ std::string format_report(const SimulationResult& r) {
 
   out += "time by process (all cells' work and the host's voxel generation):\n";
   const double total = r.breakdown.total().seconds(hz);
-  for (CostCategory c : kCategories) {
-    const double sec = r.breakdown[c].seconds(hz);
-    out += fmt::format("  {:<22} {:>14.3f} s {:>7.1f} %\n", to_string(c), sec,
+  for (const CostCategoryInfo& c : kCostCategoryTable) {
+    const double sec = r.breakdown[c.category].seconds(hz);
+    out += fmt::format("  {:<22} {:>14.3f} s {:>7.1f} %\n", c.name, sec,
                        total > 0 ? 100.0 * sec / total : 0.0);
   }
   out += fmt::format("  {:<22} {:>14.3f} s\n", "total", total);
@@ -207,9 +203,9 @@ nlohmann::json report_json(const SimulationResult& r) {
                      {"finish_cycles", c.finish.count()}});
   json breakdown = json::object();
   json breakdown_cycles = json::object();
-  for (CostCategory c : kCategories) {
-    breakdown[json_key(c)] = r.breakdown[c].seconds(hz);
-    breakdown_cycles[json_key(c)] = r.breakdown[c].count();
+  for (const CostCategoryInfo& c : kCostCategoryTable) {
+    breakdown[c.json_key] = r.breakdown[c.category].seconds(hz);
+    breakdown_cycles[c.json_key] = r.breakdown[c.category].count();
   }
   const LoadSpread s = load_spread(r);
   json report = {{"mode", to_string(r.config.mode)},

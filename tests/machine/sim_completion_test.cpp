@@ -110,7 +110,7 @@ TEST(CompletionCycles, ConsecutivePixelsOfACellAreTheirOperationsCyclesApart) {
       const ScreenPixel p = w.screen_pixel(k);
       OpCounts ops;
       tracer.trace_pixel(p.x, p.y, scratch, ops);
-      t += pixel_cost(ops, config.profile.cell).total().count();
+      t += pixel_cost(ops, config.profile.costs).total().count();
       ASSERT_EQ(r.screens[0].completion_cycles[static_cast<std::size_t>(p.y) * 30 + p.x], t)
           << "cell " << c << " pixel " << k;
     }

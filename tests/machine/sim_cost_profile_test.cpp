@@ -23,15 +23,15 @@ TEST(CostProfile, CapHoldsTable41AtEightMegahertz) {
   const CostProfile p = load_cost_profile("cap");
   EXPECT_EQ(p.name, "cap");
   EXPECT_EQ(p.clock_hz, 8'000'000u);
-  EXPECT_EQ(p.cell.sphere_test, Cycles(2980 * 8));
-  EXPECT_EQ(p.cell.cone_test, Cycles(5783 * 8));
-  EXPECT_EQ(p.cell.box_test, Cycles(5580 * 8));
-  EXPECT_EQ(p.cell.dda_setup, Cycles(4237 * 8));
-  EXPECT_EQ(p.cell.dda_step, Cycles(160 * 8));
-  EXPECT_EQ(p.cell.matvec, Cycles(597 * 8));
-  EXPECT_EQ(p.cell.ray_other, Cycles(14776 * 8));  // the M380's fitted 90.1 us x 164
-  EXPECT_EQ(p.cell.voxel_visit, Cycles(1345 * 8));  // the M380's fitted 8.2 us x 164
-  EXPECT_EQ(p.host.matmat, Cycles(3134 * 8));
+  EXPECT_EQ(p.costs[CostTerm::SphereTest], Cycles(2980 * 8));
+  EXPECT_EQ(p.costs[CostTerm::ConeTest], Cycles(5783 * 8));
+  EXPECT_EQ(p.costs[CostTerm::BoxTest], Cycles(5580 * 8));
+  EXPECT_EQ(p.costs[CostTerm::DdaSetup], Cycles(4237 * 8));
+  EXPECT_EQ(p.costs[CostTerm::DdaStep], Cycles(160 * 8));
+  EXPECT_EQ(p.costs[CostTerm::Matvec], Cycles(597 * 8));
+  EXPECT_EQ(p.costs[CostTerm::RayOther], Cycles(14776 * 8));  // the M380's fitted 90.1 us x 164
+  EXPECT_EQ(p.costs[CostTerm::VoxelVisit], Cycles(1345 * 8));  // the M380's fitted 8.2 us x 164
+  EXPECT_EQ(p.costs[CostTerm::HostMatmat], Cycles(3134 * 8));
   EXPECT_EQ(p.bus.bytes_per_second, 2'000'000u);
   EXPECT_EQ(p.link.bits_per_second, 15'000'000u);
 }
@@ -39,15 +39,15 @@ TEST(CostProfile, CapHoldsTable41AtEightMegahertz) {
 TEST(CostProfile, M380HoldsTable41AtFiftyMegahertz) {
   const CostProfile p = load_cost_profile("m380");
   EXPECT_EQ(p.clock_hz, 50'000'000u);
-  EXPECT_EQ(p.cell.sphere_test, Cycles(910));   // 18.2 us
-  EXPECT_EQ(p.cell.cone_test, Cycles(1590));    // 31.8 us
-  EXPECT_EQ(p.cell.box_test, Cycles(2110));     // 42.2 us
-  EXPECT_EQ(p.cell.dda_setup, Cycles(1690));    // 33.8 us
-  EXPECT_EQ(p.cell.dda_step, Cycles(70));       // 1.4 us
-  EXPECT_EQ(p.cell.matvec, Cycles(180));        // 3.6 us
-  EXPECT_EQ(p.host.matmat, Cycles(925));        // 18.5 us
-  EXPECT_EQ(p.cell.ray_other, Cycles(4505));    // 90.1 us, fitted to Table 4-2
-  EXPECT_EQ(p.cell.voxel_visit, Cycles(410));   // 8.2 us, fitted to Table 4-2
+  EXPECT_EQ(p.costs[CostTerm::SphereTest], Cycles(910));   // 18.2 us
+  EXPECT_EQ(p.costs[CostTerm::ConeTest], Cycles(1590));    // 31.8 us
+  EXPECT_EQ(p.costs[CostTerm::BoxTest], Cycles(2110));     // 42.2 us
+  EXPECT_EQ(p.costs[CostTerm::DdaSetup], Cycles(1690));    // 33.8 us
+  EXPECT_EQ(p.costs[CostTerm::DdaStep], Cycles(70));       // 1.4 us
+  EXPECT_EQ(p.costs[CostTerm::Matvec], Cycles(180));        // 3.6 us
+  EXPECT_EQ(p.costs[CostTerm::HostMatmat], Cycles(925));        // 18.5 us
+  EXPECT_EQ(p.costs[CostTerm::RayOther], Cycles(4505));    // 90.1 us, fitted to Table 4-2
+  EXPECT_EQ(p.costs[CostTerm::VoxelVisit], Cycles(410));   // 8.2 us, fitted to Table 4-2
 }
 
 std::string minimal_profile_text() {
@@ -109,7 +109,7 @@ TEST(CostProfile, RefusesATimeWhoseCyclesA64BitCountCannotHold) {
   // The largest double below 2^64 is accepted, exactly; 2^64 itself is not.
   nlohmann::json largest = j;
   largest["host_costs_us"]["voxel_entry"] = 18446744073709549568.0;  // 2^64 - 2^11
-  EXPECT_EQ(parse_cost_profile(largest.dump(), "ok.json").host.voxel_entry,
+  EXPECT_EQ(parse_cost_profile(largest.dump(), "ok.json").costs[CostTerm::HostEntry],
             Cycles(18446744073709549568u));
   struct Case {
     const char* section;
@@ -187,7 +187,7 @@ TEST(CostProfile, PixelCostIsEachCountTimesItsCost) {
   ops.matvec = 1;
   ops.rays = 2;
   ops.aa_squares = 3;
-  const CostBreakdown b = pixel_cost(ops, p.cell);
+  const CostBreakdown b = pixel_cost(ops, p.costs);
   EXPECT_EQ(b[CostCategory::Intersection], Cycles(3 * 1 + 2 * 2 + 1 * 3));
   EXPECT_EQ(b[CostCategory::Dda], Cycles(1 * 4 + 7 * 5 + (1 + 7) * 13));  // every voxel visited
   EXPECT_EQ(b[CostCategory::Csg], Cycles(4 * 7 + 5 * 8));
@@ -204,7 +204,7 @@ TEST(CostProfile, VoxelGenerationCostIsEachCountTimesItsHostCost) {
   n.matvec = 80;
   n.columns = 50;
   n.voxel_entries = 200;
-  const CostBreakdown b = voxel_generation_cost(n, p.host);
+  const CostBreakdown b = voxel_generation_cost(n, p.costs);
   EXPECT_EQ(b[CostCategory::VoxelGeneration], Cycles(10 * 1 + 10 * 2 + 80 * 3 + 50 * 4 + 200 * 5));
   EXPECT_EQ(b.total(), b[CostCategory::VoxelGeneration]);
 }
@@ -214,30 +214,30 @@ TEST(CostProfile, APixelCostBeyondTheCounterNamesTheCategoryAndTheField) {
   OpCounts ops;
   ops.box_tests = std::uint64_t{1} << 63;  // x 3 cycles
   try {
-    pixel_cost(ops, p.cell);
+    pixel_cost(ops, p.costs);
     FAIL() << "no overflow";
   } catch (const CycleOverflow& e) {
     EXPECT_EQ(e.quantity(),
               "intersection work: 9223372036854775808 box tests x cell_costs_us.box_test (3 cycles)");
   }
   // Each product fits; their sum does not (no per-voxel work, whose product would not fit).
-  p.cell.voxel_visit = Cycles(0);
+  p.costs[CostTerm::VoxelVisit] = Cycles(0);
   OpCounts sum;
   sum.dda_setups = std::uint64_t{1} << 61;  // x 4 cycles = 2^63
   sum.dda_steps = std::uint64_t{1} << 61;   // x 5 cycles
   try {
-    pixel_cost(sum, p.cell);
+    pixel_cost(sum, p.costs);
     FAIL() << "no overflow";
   } catch (const CycleOverflow& e) {
     EXPECT_EQ(e.quantity(), "3DDDA (incl. set-up) work: 9223372036854775808 + 11529215046068469760 cycles");
   }
   // The voxels visited are the set-ups plus the steps, each charged voxel_visit.
-  p.cell.voxel_visit = Cycles(13);
+  p.costs[CostTerm::VoxelVisit] = Cycles(13);
   OpCounts voxels;
   voxels.dda_setups = std::uint64_t{1} << 60;
   voxels.dda_steps = std::uint64_t{1} << 60;
   try {
-    pixel_cost(voxels, p.cell);
+    pixel_cost(voxels, p.costs);
     FAIL() << "no overflow";
   } catch (const CycleOverflow& e) {
     EXPECT_EQ(e.quantity(),
@@ -250,7 +250,7 @@ TEST(CostProfile, VoxelGenerationBeyondTheCounterNamesTheHostField) {
   VoxelGenCounts n;
   n.voxel_entries = Cycles::kMax / 5 + 1;
   try {
-    voxel_generation_cost(n, p.host);
+    voxel_generation_cost(n, p.costs);
     FAIL() << "no overflow";
   } catch (const CycleOverflow& e) {
     EXPECT_NE(e.quantity().find("voxel entries x host_costs_us.voxel_entry (5 cycles)"),

@@ -46,7 +46,7 @@ TEST(Machine, CellBusyCyclesAreTheSumOfItsPixelsOperationCosts) {
     const SimulationResult r = simulate_frame(tracer, config, 2, false);
     const WindowLayout layout(mode, config.cells, 45, 38);
     Tracer::Scratch scratch(scene);
-    CostBreakdown all = voxel_generation_cost(scene.voxel_counts, config.profile.host);
+    CostBreakdown all = voxel_generation_cost(scene.voxel_counts, config.profile.costs);
     for (const CellReport& c : r.cells) {
       CostBreakdown expected;
       std::uint64_t rays = 0;
@@ -55,7 +55,7 @@ TEST(Machine, CellBusyCyclesAreTheSumOfItsPixelsOperationCosts) {
         const ScreenPixel p = w.screen_pixel(k);
         OpCounts ops;
         tracer.trace_pixel(p.x, p.y, scratch, ops);
-        expected += pixel_cost(ops, config.profile.cell);
+        expected += pixel_cost(ops, config.profile.costs);
         rays += ops.rays;
       }
       EXPECT_EQ(c.busy, expected.total()) << to_string(mode) << " cell " << c.id;
@@ -78,7 +78,7 @@ TEST(Machine, TransfersTakeArbitrationPlusBytesOverBandwidthPlusLatency) {
   auto transfer = [&](std::uint64_t bytes) { return p.bus.arbitration + p.bus_data_cycles(bytes) + p.bus.latency; };
 
   // The host's spans: voxel generation, then the four broadcasts back to back.
-  const Cycles voxel_generation = voxel_generation_cost(scene.voxel_counts, p.host).total();
+  const Cycles voxel_generation = voxel_generation_cost(scene.voxel_counts, p.costs).total();
   const std::uint64_t sizes[] = {p.program_bytes, r.footprint.scene_bytes(), r.footprint.voxel_bytes(),
                                  kStartCommandBytes};
   std::vector<TimelineSpan> host;
@@ -158,13 +158,13 @@ TEST(Machine, MemoryNeedsBeyond64BitsDoNotWrapIntoAFit) {
 }
 
 // A pixel's cost exactly, in 128 bits: the reference for overflow checks.
-unsigned __int128 wide_pixel_cycles(const OpCounts& o, const CellCosts& c) {
+unsigned __int128 wide_pixel_cycles(const OpCounts& o, const CostTable& c) {
   auto t = [](std::uint64_t n, Cycles cost) { return static_cast<unsigned __int128>(n) * cost.count(); };
-  return t(o.sphere_tests, c.sphere_test) + t(o.cone_tests, c.cone_test) + t(o.box_tests, c.box_test) +
-         t(o.dda_setups, c.dda_setup) + t(o.dda_steps, c.dda_step) + t(o.dda_setups, c.voxel_visit) +
-         t(o.dda_steps, c.voxel_visit) + t(o.tree_visits, c.tree_visit) +
-         t(o.hits_sorted, c.hit_sort) + t(o.matvec, c.matvec) + t(o.shading_evals, c.shading_eval) +
-         t(o.rays, c.ray_other) + c.pixel_write.count();
+  return t(o.sphere_tests, c[CostTerm::SphereTest]) + t(o.cone_tests, c[CostTerm::ConeTest]) + t(o.box_tests, c[CostTerm::BoxTest]) +
+         t(o.dda_setups, c[CostTerm::DdaSetup]) + t(o.dda_steps, c[CostTerm::DdaStep]) + t(o.dda_setups, c[CostTerm::VoxelVisit]) +
+         t(o.dda_steps, c[CostTerm::VoxelVisit]) + t(o.tree_visits, c[CostTerm::TreeVisit]) +
+         t(o.hits_sorted, c[CostTerm::HitSort]) + t(o.matvec, c[CostTerm::Matvec]) + t(o.shading_evals, c[CostTerm::ShadingEval]) +
+         t(o.rays, c[CostTerm::RayOther]) + c[CostTerm::PixelWrite].count();
 }
 
 std::string cycle_overflow_of(const Tracer& tracer, const MachineConfig& config, int threads) {
@@ -182,7 +182,7 @@ TEST(Machine, APixelBeyondTheCycleCounterIsTheFirstInScreenOrderOnAnyThreadCount
   const Tracer tracer(scene, TraceOptions{});
   MachineConfig config = config_of({4, 4}, PixelMode::Dot);
   config.profile.source = "slow.json";
-  config.profile.cell.sphere_test = Cycles(Cycles::kMax / 12);
+  config.profile.costs[CostTerm::SphereTest] = Cycles(Cycles::kMax / 12);
   // The reference: the first pixel in screen order whose exact cost exceeds 2^64 - 1.
   Tracer::Scratch scratch(scene);
   int first_x = -1, first_y = -1, overflowing = 0;
@@ -190,7 +190,7 @@ TEST(Machine, APixelBeyondTheCycleCounterIsTheFirstInScreenOrderOnAnyThreadCount
     for (int x = 0; x < 40; ++x) {
       OpCounts ops;
       tracer.trace_pixel(x, y, scratch, ops);
-      if (wide_pixel_cycles(ops, config.profile.cell) > Cycles::kMax && overflowing++ == 0) {
+      if (wide_pixel_cycles(ops, config.profile.costs) > Cycles::kMax && overflowing++ == 0) {
         first_x = x;
         first_y = y;
       }
@@ -213,7 +213,7 @@ TEST(Machine, ACellsWorkBeyondTheCycleCounterNamesTheCellAndItsExactSum) {
   const PreparedScene scene = balls(24, 20);
   const Tracer tracer(scene, TraceOptions{.primary_only = true});
   MachineConfig config = config_of({4, 4}, PixelMode::Dot);
-  config.profile.cell.ray_other = Cycles(Cycles::kMax / 2 + 1);  // every pixel fits; two do not
+  config.profile.costs[CostTerm::RayOther] = Cycles(Cycles::kMax / 2 + 1);  // every pixel fits; two do not
   const WindowLayout layout(PixelMode::Dot, config.cells, 24, 20);
   Tracer::Scratch scratch(scene);
   unsigned __int128 cell0 = 0;
@@ -222,8 +222,8 @@ TEST(Machine, ACellsWorkBeyondTheCycleCounterNamesTheCellAndItsExactSum) {
     OpCounts ops;
     tracer.trace_pixel(p.x, p.y, scratch, ops);
     ASSERT_EQ(ops.rays, 1u);
-    ASSERT_LE(wide_pixel_cycles(ops, config.profile.cell), Cycles::kMax);
-    cell0 += wide_pixel_cycles(ops, config.profile.cell);
+    ASSERT_LE(wide_pixel_cycles(ops, config.profile.costs), Cycles::kMax);
+    cell0 += wide_pixel_cycles(ops, config.profile.costs);
   }
   const std::string expected = fmt::format("cell[0,0]'s work for its 30 pixels adds up to {} cycles", cell0);
   for (int threads : {1, 2}) {
@@ -237,12 +237,13 @@ TEST(Machine, AFrameBeyondTheCycleCounterNamesTheCellWhoseTracingEndsTooLate) {
   const PreparedScene scene = balls(1, 1);
   const Tracer tracer(scene, TraceOptions{.primary_only = true});
   MachineConfig config = config_of({1, 1}, PixelMode::Dot);
-  config.profile.cell = CellCosts{};
-  config.profile.cell.ray_other = Cycles(Cycles::kMax - 1000);  // fits, but not after the broadcasts
+  for (const CostTermInfo& t : kCostTerms)
+    if (t.payer == CostPayer::Cell) config.profile.costs[t.term] = Cycles(0);
+  config.profile.costs[CostTerm::RayOther] = Cycles(Cycles::kMax - 1000);  // fits, but not after the broadcasts
   const CostProfile& p = config.profile;
   auto transfer = [&](std::uint64_t bytes) { return p.bus.arbitration + p.bus_data_cycles(bytes) + p.bus.latency; };
   const SceneFootprint f = scene_footprint(scene);
-  Cycles start = voxel_generation_cost(scene.voxel_counts, p.host).total();
+  Cycles start = voxel_generation_cost(scene.voxel_counts, p.costs).total();
   for (std::uint64_t bytes : {p.program_bytes, f.scene_bytes(), f.voxel_bytes(), kStartCommandBytes})
     start += transfer(bytes);
   const std::string message = cycle_overflow_of(tracer, config, 1);

@@ -37,7 +37,7 @@ TEST(RunTotals, CellsOperationsAddUpToTheWholeScreensOnAnyThreadCount) {
         sum += c.ops;
         EXPECT_EQ(c.rays, c.ops.rays);
         // Each cell's busy time is the cost of its operations.
-        EXPECT_EQ(c.busy, work_cost(c.ops, c.pixels, config.profile.cell).total());
+        EXPECT_EQ(c.busy, work_cost(c.ops, c.pixels, config.profile.costs).total());
       }
       EXPECT_EQ(sum, stats.ops) << to_string(mode) << ", " << threads << " threads";
       EXPECT_EQ(r.voxel_counts, scene.voxel_counts);

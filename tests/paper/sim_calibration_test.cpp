@@ -59,7 +59,7 @@ TEST(Calibration, FittingTable42AgainGivesTheShippedCosts) {
 
 TEST(Calibration, CapCostsAreTheM380sTimesTheTable41Ratio) {
   const CostProfile cap = load_cost_profile("cap"), m380 = load_cost_profile("m380");
-  for (FittedCost c : shipped_fitted_costs())
+  for (CostTerm c : shipped_fitted_costs())
     EXPECT_EQ(profile_value_us(c, cap), std::round(paper::kCapOverM380 * profile_value_us(c, m380)))
         << profile_key(c);
 }

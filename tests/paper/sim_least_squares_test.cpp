@@ -51,8 +51,8 @@ TEST(LeastSquares, RefusesRaggedOrEmptyInput) {
 TEST(CalibrationFit, RecoversTheCostsThePublishedTimesWereMadeWith) {
   CostProfile profile;
   profile.clock_hz = 1'000'000;  // 1 cycle = 1 us
-  profile.cell.ray_other = Cycles(10);
-  profile.cell.voxel_visit = Cycles(1);
+  profile.costs[CostTerm::RayOther] = Cycles(10);
+  profile.costs[CostTerm::VoxelVisit] = Cycles(1);
   const double true_ray = 25, true_voxel = 4;  // us
   std::vector<FitCell> cells;
   for (int i = 1; i <= 6; ++i) {
@@ -66,7 +66,7 @@ TEST(CalibrationFit, RecoversTheCostsThePublishedTimesWereMadeWith) {
     c.paper_seconds = fixed + 1e-6 * (true_ray * static_cast<double>(c.ops.rays) + true_voxel * voxels);
     cells.push_back(c);
   }
-  const FitResult fit = fit_costs(cells, profile, {FittedCost::RayOther, FittedCost::VoxelVisit});
+  const FitResult fit = fit_costs(cells, profile, {CostTerm::RayOther, CostTerm::VoxelVisit});
   EXPECT_NEAR(fit.value_us[0], true_ray, 1e-6);
   EXPECT_NEAR(fit.value_us[1], true_voxel, 1e-6);
   EXPECT_NEAR(fit.rms_relative_error, 0, 1e-9);
@@ -87,11 +87,12 @@ TEST(CalibrationFit, CountsAndProfileValuesPerCost) {
   c.voxels.primitives = 3;
   c.voxels.columns = 6;
   c.voxels.voxel_entries = 8;
-  const double want[kFittedCosts] = {7, 11, 4, 5, 3, 6, 8};
-  for (int k = 0; k < kFittedCosts; ++k) EXPECT_EQ(charged_count(all_fitted_costs()[k], c), want[k]) << k;
+  const double want[] = {7, 11, 4, 5, 3, 6, 8};
+  ASSERT_EQ(all_fitted_costs().size(), std::size(want));
+  for (std::size_t k = 0; k < std::size(want); ++k) EXPECT_EQ(charged_count(all_fitted_costs()[k], c), want[k]) << k;
   const CostProfile m380 = load_cost_profile("m380");
-  EXPECT_DOUBLE_EQ(profile_value_us(FittedCost::HostColumn, m380), 10.8);
-  EXPECT_STREQ(profile_key(FittedCost::VoxelVisit), "cell_costs_us.voxel_visit");
+  EXPECT_DOUBLE_EQ(profile_value_us(CostTerm::HostColumn, m380), 10.8);
+  EXPECT_EQ(profile_key(CostTerm::VoxelVisit), "cell_costs_us.voxel_visit");
 }
 
 }  // namespace
