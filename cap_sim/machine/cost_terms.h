@@ -38,11 +38,11 @@ const char* json_key(CostCategory c);   // kCostCategoryTable's json_key
 enum class CostPayer { Cell, Host };
 
 enum class CostTerm {
-  SphereTest, ConeTest, BoxTest, DdaSetup, DdaStep, VoxelVisit, Matvec, TreeVisit, HitSort, ShadingEval,
-  RayOther, AaSquare, PixelWrite,
-  HostPrimitive, HostMatmat, HostMatvec, HostColumn, HostEntry,
+  SphereTest, ConeTest, BoxTest, DdaSetup, DdaStep, VoxelVisit, Matvec, VoxelPass, TreeVisit, HitSort,
+  ShadingEval, RayOther, AaSquare, PixelWrite,
+  HostPrimitive, HostMatmat, HostMatvec, HostColumn, HostEntry, HostGridVoxel,
 };
-inline constexpr int kCostTermCount = 18;
+inline constexpr int kCostTermCount = 20;
 
 // Where the shipped profiles' value of a term comes from.
 enum class CostSource {
@@ -89,6 +89,10 @@ inline constexpr std::array<CostTermInfo, kCostTermCount> kCostTerms = {{
     // 4x4 matrix x vector outside the intersection tests (two per normal).
     {CostTerm::Matvec, CostPayer::Cell, "matvec", CostCategory::Other, "matrix-vector products", "product",
      CostSource::Table41, [](const OpCounts& o, std::uint64_t) { return o.matvec; }, nullptr},
+    // Partial evaluation (§2.3): in each voxel that holds primitives, its list
+    // fetched, its crossings put in order and handed to the status tree.
+    {CostTerm::VoxelPass, CostPayer::Cell, "voxel_pass", CostCategory::Csg, "voxel passes", "voxel",
+     CostSource::Fitted, [](const OpCounts& o, std::uint64_t) { return o.voxel_passes; }, nullptr},
     {CostTerm::TreeVisit, CostPayer::Cell, "tree_visit", CostCategory::Csg, "status-tree visits", "node visit",
      CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.tree_visits; }, nullptr},
     {CostTerm::HitSort, CostPayer::Cell, "hit_sort", CostCategory::Csg, "crossings sorted", "crossing",
@@ -112,6 +116,9 @@ inline constexpr std::array<CostTermInfo, kCostTermCount> kCostTerms = {{
      "column", CostSource::Reasoned, nullptr, [](const VoxelGenCounts& n) { return n.columns; }},
     {CostTerm::HostEntry, CostPayer::Host, "voxel_entry", CostCategory::VoxelGeneration, "voxel entries",
      "entry", CostSource::Reasoned, nullptr, [](const VoxelGenCounts& n) { return n.voxel_entries; }},
+    // The grid itself: every voxel set up and given its (possibly empty) list.
+    {CostTerm::HostGridVoxel, CostPayer::Host, "grid_voxel", CostCategory::VoxelGeneration, "grid voxels",
+     "voxel", CostSource::Fitted, nullptr, [](const VoxelGenCounts& n) { return n.grid_voxels; }},
 }};
 
 const CostTermInfo& info(CostTerm t);

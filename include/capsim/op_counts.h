@@ -13,6 +13,8 @@ struct OpCounts {
   std::uint64_t box_tests = 0;      // ray-box intersection tests
   std::uint64_t dda_setups = 0;     // Algorithm-2 set-ups (one per ray that meets the universe)
   std::uint64_t dda_steps = 0;      // Algorithm-2 voxel steps
+  std::uint64_t voxel_passes = 0;   // partial evaluation: voxels visited that hold primitives,
+                                    // in each of which Algorithm-4 runs over the voxel's crossings
   std::uint64_t tree_visits = 0;    // Algorithm-4 node visits (leaf toggles and operator nodes)
   std::uint64_t hits_sorted = 0;    // crossings put in order along the ray
   std::uint64_t shading_evals = 0;  // local illumination evaluations (one per light per hit)
@@ -39,6 +41,7 @@ struct VoxelGenCounts {
   std::uint64_t matvec = 0;         // 4x4 matrix x vector products (box corners)
   std::uint64_t columns = 0;        // X-Y voxel columns examined
   std::uint64_t voxel_entries = 0;  // (voxel, primitive) entries written
+  std::uint64_t grid_voxels = 0;    // voxels of the grid (N^3), each set up and given its list
 
   VoxelGenCounts& operator+=(const VoxelGenCounts& o);
   bool operator==(const VoxelGenCounts&) const = default;

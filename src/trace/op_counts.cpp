@@ -8,6 +8,7 @@ OpCounts& OpCounts::operator+=(const OpCounts& o) {
   box_tests += o.box_tests;
   dda_setups += o.dda_setups;
   dda_steps += o.dda_steps;
+  voxel_passes += o.voxel_passes;
   tree_visits += o.tree_visits;
   hits_sorted += o.hits_sorted;
   shading_evals += o.shading_evals;
@@ -26,6 +27,7 @@ VoxelGenCounts& VoxelGenCounts::operator+=(const VoxelGenCounts& o) {
   matvec += o.matvec;
   columns += o.columns;
   voxel_entries += o.voxel_entries;
+  grid_voxels += o.grid_voxels;
   return *this;
 }
 

@@ -164,6 +164,7 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
   do {
     // Intersect only this voxel's primitives, each once per ray (the mailbox).
     const std::span<const std::uint32_t> voxel = grid.voxel(dda.voxel());
+    if (!voxel.empty()) ++ops.voxel_passes;  // Algorithm-4 applied in this voxel (§2.3)
     if (kMayBeCrowded && voxel.size() > kCrowdedVoxel) {
       meet_crowded_voxel(voxel, scene_.prims, ray, s, ops);
     } else {

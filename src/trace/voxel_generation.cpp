@@ -276,7 +276,10 @@ VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
     }
   }
   VoxelGrid g = build_grid(universe, n, placements);
-  if (counts) counts->voxel_entries += g.entries();
+  if (counts) {
+    counts->voxel_entries += g.entries();
+    counts->grid_voxels += static_cast<std::uint64_t>(n) * static_cast<std::uint64_t>(n) * static_cast<std::uint64_t>(n);
+  }
   return g;
 }
 

@@ -56,8 +56,9 @@ std::string minimal_profile_text() {
     "cell_costs_us": {"sphere_test": 1, "cone_test": 2, "box_test": 3, "dda_setup": 4,
                       "dda_step": 5, "voxel_visit": 13, "matvec": 6, "tree_visit": 7, "hit_sort": 8,
                       "shading_eval": 9, "ray_other": 10, "pixel_write": 11,
-                      "aa_square": 12},
-    "host_costs_us": {"primitive": 1, "matmat": 2, "matvec": 3, "voxel_column": 4, "voxel_entry": 5},
+                      "aa_square": 12, "voxel_pass": 14},
+    "host_costs_us": {"primitive": 1, "matmat": 2, "matvec": 3, "voxel_column": 4, "voxel_entry": 5,
+                      "grid_voxel": 6},
     "bus": {"bytes_per_second": 1000, "arbitration_us": 1.4, "latency_us": 1.6},
     "link": {"bits_per_second": 8000, "latency_us": 0, "topology": "mesh"},
     "cell_memory_bytes": 4096, "program_bytes": 1024})").dump();

@@ -212,6 +212,7 @@ TEST(Tracer, OperationCountsOfOneRayThroughOneSphere) {
   OpCounts want;
   want.sphere_tests = 1;
   want.dda_setups = 1;
+  want.voxel_passes = 1;  // the one voxel holds the sphere
   want.hits_sorted = 2;  // entry and exit
   want.tree_visits = 1;  // the leaf is the root
   want.matvec = 2;       // the normal: point to object space, normal to world
@@ -233,6 +234,42 @@ TEST(Tracer, PartialEvaluationStopsInTheFirstVisibleVoxel) {
   EXPECT_NEAR(h.t, 3.1, 1e-12);
   EXPECT_EQ(ops.sphere_tests, 1u);
   EXPECT_EQ(ops.dda_steps, 0u);
+  EXPECT_EQ(ops.voxel_passes, 1u);
+}
+
+// Partial evaluation passes through every voxel the ray visits that holds
+// primitives (Algorithm-4 applied in that voxel), and through no empty one.
+TEST(Tracer, EveryVisitedVoxelThatHoldsPrimitivesIsOnePass) {
+  PrepareOptions o;
+  o.grid = 6;
+  const PreparedScene ps = prepare_scene(
+      make_scene({sphere({1, 0, 0}, 0.9), sphere({7, 0, 0}, 0.9), box({3, -1, -1}, {0.5, 2, 2})}), o);
+  const Tracer tracer(ps, {});
+  Tracer::Scratch s(ps);
+  int rays_with_passes = 0, rays_with_empty_voxels = 0;
+  for (double y : {-0.95, -0.6, -0.2, 0.3, 0.7, 0.95})
+    for (double z : {-0.95, -0.1, 0.5, 0.95}) {
+      const Ray r = ray({-1, y, z}, {1, 0.01, 0.02});
+      OpCounts ops;
+      Hit h;
+      const bool hit = tracer.first_hit(r, s, ops, h);
+      // The voxels it visited, by the same 3DDDA, up to the hit's voxel.
+      Dda3 dda;
+      ASSERT_TRUE(dda.setup(ps.grid, r));
+      std::uint64_t visited = 1, nonempty = 0;
+      for (;;) {
+        if (!ps.grid.voxel(dda.voxel()).empty()) ++nonempty;
+        if (hit && dda.t_out() >= h.t) break;
+        if (!dda.step()) break;
+        ++visited;
+      }
+      EXPECT_EQ(ops.dda_setups + ops.dda_steps, visited) << y << " " << z;
+      EXPECT_EQ(ops.voxel_passes, nonempty) << y << " " << z;
+      rays_with_passes += ops.voxel_passes > 1;
+      rays_with_empty_voxels += ops.voxel_passes < visited;  // stepped through, no pass
+    }
+  EXPECT_GT(rays_with_passes, 0);
+  EXPECT_GT(rays_with_empty_voxels, 0);
 }
 
 TEST(Tracer, RayFromInsideFindsTheExit) {
@@ -446,5 +483,19 @@ TEST(Render, RowsComeOnceEachAndMatchTheFramebuffer) {
       EXPECT_EQ(static_cast<float>(rows[j][i].depth), fb.depth[k]);
       EXPECT_EQ(static_cast<float>(rows[j][i].primitive), fb.id[k]);
     }
+  }
+}
+
+// The host's Algorithm-3 counts of a prepared scene: one placement per
+// primitive, the grid's entries as built, and every voxel of the N^3 grid.
+TEST(VoxelGeneration, CountsThePrimitivesTheEntriesAndTheGridsVoxels) {
+  for (int n : {1, 3, 8}) {
+    PrepareOptions o;
+    o.grid = n;
+    const PreparedScene ps =
+        prepare_scene(make_scene({sphere({1, 0, 0}, 0.9), sphere({7, 0, 0}, 0.9), box({3, -1, -1}, {0.5, 2, 2})}), o);
+    EXPECT_EQ(ps.voxel_counts.primitives, 3u) << n;
+    EXPECT_EQ(ps.voxel_counts.voxel_entries, ps.grid.entries()) << n;
+    EXPECT_EQ(ps.voxel_counts.grid_voxels, static_cast<std::uint64_t>(n * n * n)) << n;
   }
 }
