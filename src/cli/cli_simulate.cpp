@@ -134,17 +134,8 @@ Command add_simulate_command(CLI::App& app) {
     config.completion_cycles = !sim->html.empty();
 
     const auto started = std::chrono::steady_clock::now();
-    const std::vector<PreparedScene> scenes = load_scenes(settings, [config, png](ImageSize size, int count) {
-      // The run's peak, or its result while a screen is written (a PNG
-      // compresses the screen's bytes; an EXR copies its cycles and,
-      // antialiased, its samples into channels, then makes planes of all).
-      const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
-      const std::size_t extra = config.aa.depth > 0 ? 2 : 1;
-      const std::uint64_t writing =
-          sim::simulation_result_memory(config, size.width, size.height, count) +
-          (png ? write_png_rgb8_memory(size.width, size.height)
-               : extra * pixels * sizeof(float) + write_image_memory(".exr", size.width, size.height, extra));
-      return std::max(sim::simulation_memory(config, size.width, size.height, count), writing);
+    const std::vector<PreparedScene> scenes = load_scenes(settings, [config](ImageSize size, int count) {
+      return sim::simulation_memory_until_written(config, size.width, size.height, count);
     });
     std::vector<std::unique_ptr<Tracer>> tracers;
     std::vector<const Tracer*> frame_tracers;
