@@ -6,6 +6,7 @@
 #include "cli/cli_outputs.h"
 #include "cli/cli_usage.h"
 #include "machine/machine.h"
+#include "paper/simulate_command.h"
 #include "report/heatmap.h"
 #include "report/html_report.h"
 #include "report/sim_report.h"
@@ -38,16 +39,24 @@ struct SimulateOptions {
   bool frame_average = false;
 };
 
-// The run's options as a command line, for the HTML report.
-std::string command_line(const TracerOptions& o, const SimulateOptions& s, int width, int height) {
-  std::string line = fmt::format("capsim simulate {} -o {} --size {}x{} --grid {} --cells {} --mode {} --profile {}",
-                                 fmt::join(o.scenes, " "), o.output, width, height, o.grid, s.cells, s.mode,
-                                 s.profile);
-  if (!o.frames.empty()) line += fmt::format(" --frames {}", o.frames);
-  if (o.primary_only) line += " --primary-only";
-  if (o.aa != "0") line += fmt::format(" --aa {} --aa-threshold {}", o.aa, o.aa_threshold);
-  if (s.frame_average) line += " --frame-average";
-  return line + fmt::format(" --threads {}", o.threads);
+// The run's settings, for the command line the HTML report gives.
+sim::SimulateSettings run_settings(const TracerSettings& t, const sim::MachineConfig& config,
+                                   const std::string& profile, int width, int height) {
+  sim::SimulateSettings s;
+  s.scenes = t.scenes;
+  s.output = t.output;
+  s.width = width;
+  s.height = height;
+  s.grid = t.prepare.grid;
+  s.cells = config.cells;
+  s.mode = config.mode;
+  s.profile = profile;
+  s.frames = t.animate ? t.frames : 0;
+  s.primary_only = t.trace.primary_only;
+  s.aa = t.aa;
+  s.frame_average = config.frame_average;
+  s.threads = t.threads;
+  return s;
 }
 
 bool is_builtin_profile(const std::string& value) {
@@ -165,7 +174,10 @@ Command add_simulate_command(CLI::App& app) {
       write_image(outputs["--heatmap"], sim::to_framebuffer(sim::render_heatmap(result)));
     if (!sim->html.empty()) {
       const sim::RunFacts facts{fmt::format("{}", fmt::join(settings.scenes, " ")),
-                                command_line(*opts, *sim, result.width, result.height), wall.count(),
+                                sim::simulate_command(run_settings(settings, config, sim->profile, result.width,
+                                                                   result.height),
+                                                      sim::CommandForm::EveryOption),
+                                wall.count(),
                                 CAPSIM_VERSION};
       sim::write_text_file(outputs["--html"], sim::html_report(result, facts));
     }
