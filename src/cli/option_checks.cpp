@@ -102,15 +102,12 @@ std::string accepted_values(const CLI::Option& option) {
   return check ? check->get_description() : "";
 }
 
-void refuse(const CLI::Option& option, const std::string& value, const std::string& problem) {
-  throw UsageError(
-      fmt::format("{} {} {} (accepted: {})", option.get_name(), shown(value), problem, accepted_values(option)));
-}
-
 const std::string& checked(const OptionText<>& o) {
   if (const std::optional<CLI::Validator> check = attached_check(*o.option)) {
     const std::string problem = (*check)(o.text);
-    if (!problem.empty()) refuse(*o.option, o.text, problem);
+    if (!problem.empty())
+      throw UsageError(fmt::format("{} {} {} (accepted: {})", o.option->get_name(), shown(o.text), problem,
+                                   accepted_values(*o.option)));
   }
   return o.text;
 }

@@ -55,11 +55,8 @@ CLI::Option* add_option(CLI::App& cmd, const std::string& names, OptionText<Text
 // attached.
 std::string accepted_values(const CLI::Option& option);
 
-// Throws UsageError "NAME VALUE PROBLEM (accepted: ...)" for the option.
-[[noreturn]] void refuse(const CLI::Option& option, const std::string& value, const std::string& problem);
-
-// The option's text once its check passes; throws UsageError as refuse does
-// with the check's problem otherwise.
+// The option's text once its check passes; otherwise throws UsageError
+// "NAME VALUE PROBLEM (accepted: ...)" with the check's problem.
 const std::string& checked(const OptionText<>& o);
 
 // Checks, to be described with what they accept (.description(...)).
