@@ -1,6 +1,7 @@
 #include "machine/machine.h"
 
 #include "capsim/host_threads.h"
+#include "capsim/image_io.h"
 #include "capsim/progress.h"
 #include "kernel/event_kernel.h"
 #include "machine/cell.h"
@@ -179,6 +180,17 @@ std::uint64_t simulation_result_memory(const MachineConfig& config, int width, i
                                       : Framebuffer::bytes(1, 1) + sizeof(float) +
                                             (config.aa.depth > 0 ? sizeof(float) : 0);
   return per_pixel * pixels * static_cast<std::uint64_t>(frames);
+}
+
+std::uint64_t simulation_memory_until_written(const MachineConfig& config, int width, int height, int frames) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  const std::size_t extra = config.aa.depth > 0 ? 2 : 1;  // EXR channels: cycles, and samples
+  const std::uint64_t writing =
+      simulation_result_memory(config, width, height, frames) +
+      (config.screen == ScreenFormat::Srgb8
+           ? write_png_rgb8_memory(width, height)
+           : extra * pixels * sizeof(float) + write_image_memory(".exr", width, height, extra));
+  return std::max(simulation_memory(config, width, height, frames), writing);
 }
 
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame) {

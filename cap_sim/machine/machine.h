@@ -141,6 +141,13 @@ std::uint64_t simulation_memory(const MachineConfig& config, int width, int heig
 // What the SimulationResult of such a run keeps: the frames' screens.
 std::uint64_t simulation_result_memory(const MachineConfig& config, int width, int height, int frames);
 
+// The most memory such a run takes until its screens are in image files, as
+// `capsim simulate` writes them (an 8-bit screen to PNG, a float one to EXR):
+// the run's peak (simulation_memory), or, if more, its result while a screen
+// is written. A PNG compresses the screen's bytes; an EXR copies the screen's
+// cycles and, antialiased, its samples into channels, then makes planes of all.
+std::uint64_t simulation_memory_until_written(const MachineConfig& config, int width, int height, int frames);
+
 // The window layout of frame f of a run.
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame);
 

@@ -3,6 +3,7 @@
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"
+#include "paper/simulate_command.h"
 
 #include <fmt/core.h>
 
@@ -15,23 +16,25 @@ std::string lattice_file(const LatticeShape& shape) { return fmt::format("lattic
 }  // namespace
 
 std::string run_command(const RunSpec& spec) {
+  // The shipped models and a lattice file (by default) give a 512x512 screen.
   const bool default_size = spec.width == 512 && spec.height == 512;
   const std::string size = default_size ? "" : fmt::format(" --size {}x{}", spec.width, spec.height);
-  std::string cmd;
-  std::string scene = spec.scene;
-  if (spec.lattice) {
-    scene = lattice_file(*spec.lattice);
-    cmd = fmt::format("capsim lattice {} -o {}{} && ", spec.lattice->count(), scene, size);
+  SimulateSettings run;
+  run.scenes = {spec.lattice ? lattice_file(*spec.lattice) : spec.scene};
+  run.output = "screen.png";
+  if (!spec.lattice && !default_size) {
+    run.width = spec.width;
+    run.height = spec.height;
   }
-  cmd += fmt::format("capsim simulate {} -o screen.png", scene);
-  if (!spec.lattice) cmd += size;
-  if (spec.grid > 0) cmd += fmt::format(" --grid {}", spec.grid);
-  if (spec.primary_only) cmd += " --primary-only";
-  if (!(spec.cells == CellGrid{8, 8})) cmd += " --cells " + to_string(spec.cells);
-  if (spec.mode != PixelMode::Dot) cmd += fmt::format(" --mode {}", to_string(spec.mode));
-  if (spec.profile != "cap") cmd += " --profile " + spec.profile;
-  if (spec.aa_depth > 0) cmd += fmt::format(" --aa {}", spec.aa_depth);
-  return cmd;
+  run.grid = spec.grid;
+  run.primary_only = spec.primary_only;
+  run.cells = spec.cells;
+  run.mode = spec.mode;
+  run.profile = spec.profile;
+  run.aa.depth = spec.aa_depth;
+  const std::string simulate = simulate_command(run, CommandForm::NonDefaults);
+  if (!spec.lattice) return simulate;
+  return fmt::format("capsim lattice {} -o {}{} && {}", spec.lattice->count(), run.scenes[0], size, simulate);
 }
 
 RunFigures run_experiment(const RunSpec& spec, int threads) {

@@ -42,8 +42,9 @@ struct RunFigures {
 };
 
 // The command line of a run, from the repository root: `capsim simulate`
-// with only the options that differ from its defaults (a lattice is first
-// written by `capsim lattice`). The screen goes to screen.png.
+// with only the options that differ from its defaults (simulate_command's
+// NonDefaults form; a lattice is first written by `capsim lattice`). The
+// screen goes to screen.png.
 std::string run_command(const RunSpec& spec);
 
 // Runs it. threads: host threads (0 = all); the figures do not depend on it.

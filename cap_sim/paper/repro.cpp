@@ -1,6 +1,7 @@
 #include "paper/repro.h"
 
 #include "paper/paper_figures.h"
+#include "paper/simulate_command.h"
 
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"
@@ -127,10 +128,6 @@ std::string disb_files(const std::string& dir, int frames) {
   return files;
 }
 
-std::string size_option(const ReproOptions& o) {
-  return o.width == 512 && o.height == 512 ? "" : fmt::format(" --size {}x{}", o.width, o.height);
-}
-
 Table45 run_table_4_5(const ReproOptions& o) {
   Table45 t;
   t.frames = o.table_4_5_frames;
@@ -160,8 +157,16 @@ Table45 run_table_4_5(const ReproOptions& o) {
     t.runs[i].frame = r.frame;
     t.runs[i].seconds = r.frame.seconds(config.profile.clock_hz);
     t.runs[i].max_deviation_percent = max_deviation_percent(r);
-    t.runs[i].command = fmt::format("capsim simulate {} -o disb.png{}{}{}", disb_files(o.scenes_dir, t.frames),
-                                    size_option(o), i == 0 ? "" : " --aa 2", i == 2 ? " --frame-average" : "");
+    SimulateSettings run;
+    run.scenes = {disb_files(o.scenes_dir, t.frames)};
+    run.output = "disb.png";
+    if (!(o.width == 512 && o.height == 512)) {  // DISB gives 512x512 by default
+      run.width = o.width;
+      run.height = o.height;
+    }
+    run.aa.depth = config.aa.depth;
+    run.frame_average = config.frame_average;
+    t.runs[i].command = simulate_command(run, CommandForm::NonDefaults);
   }
   return t;
 }

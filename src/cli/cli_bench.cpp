@@ -25,14 +25,14 @@ namespace capsim::cli {
 namespace {
 
 struct BenchOptions {
-  std::string size = "512x512";
-  std::string scenes = "scenes";
+  OptionText<> size{"512x512"};
+  OptionText<> scenes{"scenes"};
   std::string baseline;  // default: bench/baselines/modes[-WxH].json
   std::string json;
-  std::string plot;
+  OptionText<> plot;
   std::string html;
   bool update = false;
-  std::string threads = "0";
+  OptionText<> threads{"0"};
 };
 
 nlohmann::json read_json(const std::string& path) {
@@ -49,16 +49,15 @@ nlohmann::json read_json(const std::string& path) {
 
 int run_modes(const BenchOptions& o) {
   sim::ModesBenchOptions options;
-  std::tie(options.width, options.height) = parse_pair_option("--size", o.size, "WxH", kMaxImageSide);
-  options.threads = parse_whole_option("--threads", o.threads, 0, kMaxThreadsOption);
-  if (!std::filesystem::is_directory(o.scenes)) refuse("--scenes", o.scenes, "is not a directory");
-  options.scenes_dir = o.scenes;
+  std::tie(options.width, options.height) = pair_value(checked(o.size));
+  options.threads = whole_value(checked(o.threads));
+  options.scenes_dir = checked(o.scenes);
   const std::string baseline =
       !o.baseline.empty() ? o.baseline
       : (options.width == 512 && options.height == 512)
           ? std::string("bench/baselines/modes.json")
           : fmt::format("bench/baselines/modes-{}x{}.json", options.width, options.height);
-  if (!o.plot.empty() && !o.plot.ends_with(".svg")) refuse("--plot", o.plot, "does not end in .svg");
+  if (!o.plot.text.empty()) checked(o.plot);
   const bool have_baseline = std::filesystem::exists(baseline);
   if (!o.update && !have_baseline)
     throw UsageError(fmt::format("--baseline {}: no such file (write one with --update)", shown(baseline)));
@@ -66,7 +65,7 @@ int run_modes(const BenchOptions& o) {
   // The baseline is read above and replaced, when --update asks, only once
   // the whole run is done.
   StagedOutputs outputs({{"--json", o.json},
-                         {"--plot", o.plot},
+                         {"--plot", o.plot.text},
                          {"--html", o.html},
                          {"--baseline", o.update ? baseline : std::string()}},
                         have_baseline && !o.update ? std::vector<std::string>{baseline} : std::vector<std::string>{});
@@ -90,7 +89,7 @@ int run_modes(const BenchOptions& o) {
     }
   }
   if (!o.json.empty()) sim::write_text_file(outputs["--json"], now.dump(2) + "\n");
-  if (!o.plot.empty()) sim::write_text_file(outputs["--plot"], sim::modes_bench_svg(bench));
+  if (!o.plot.text.empty()) sim::write_text_file(outputs["--plot"], sim::modes_bench_svg(bench));
   if (!o.html.empty()) sim::write_text_file(outputs["--html"], sim::modes_page(bench, outcome, CAPSIM_VERSION));
   if (o.update) sim::write_text_file(outputs["--baseline"], now.dump(2) + "\n");
   outputs.commit();
@@ -133,18 +132,21 @@ Command add_bench_command(CLI::App& app) {
       "Every shipped model in block, line and dot mode on 4x4, 4x8, 8x8 and 16x16 cells, plain and "
       "antialiased (--aa 2): frame time, Max, Min, d, speed-up against 4x4, bus and link traffic; compared "
       "exactly with a stored baseline (docs/benchmarks.md)");
-  modes->add_option("--size", o->size, "Screen of every run, WxH")->default_val("512x512");
-  modes->add_option("--scenes", o->scenes, "Directory of the models")->default_val("scenes");
+  add_option(*modes, "--size", o->size, "Screen of every run, WxH", image_size_check())->default_val("512x512");
+  add_option(*modes, "--scenes", o->scenes, "Directory of the models", shipped_models_check())->default_val("scenes");
   modes->add_option("--baseline", o->baseline,
                     "Baseline to compare with (default: bench/baselines/modes.json at 512x512, "
                     "bench/baselines/modes-WxH.json at other sizes)");
   modes->add_flag("--update", o->update, "Rewrite the baseline with this run and print what moved");
   modes->add_option("--json", o->json, "Also write the results as JSON to this file");
-  modes->add_option("--plot", o->plot, "Also write a plot (.svg): d and speed-up against the cell count");
+  add_option(*modes, "--plot", o->plot, "Also write a plot (.svg): d and speed-up against the cell count",
+             satisfying([](const std::string& path) { return path.ends_with(".svg"); }, "does not end in .svg")
+                 .description("a path ending in .svg"));
   modes->add_option("--html", o->html,
                     "Also write one self-contained HTML page comparing the modes: the baseline's verdict, plots of "
                     "d and speed-up per model, and a sortable table of every run");
-  modes->add_option("--threads", o->threads, "Host threads (0 = all); the figures do not depend on it")
+  add_option(*modes, "--threads", o->threads, "Host threads (0 = all); the figures do not depend on it",
+             host_threads_check())
       ->default_val("0");
   return [o, modes] {
     if (modes->parsed()) return run_modes(*o);

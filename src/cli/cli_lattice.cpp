@@ -16,9 +16,9 @@ namespace capsim::cli {
 namespace {
 
 struct LatticeOptions {
-  std::string spheres;
+  OptionText<> spheres;
   std::string output;
-  std::string size = "512x512";
+  OptionText<> size{"512x512"};
 };
 
 }  // namespace
@@ -29,16 +29,20 @@ Command add_lattice_command(CLI::App& app) {
       "lattice",
       "Write a lattice of equal spheres, the test model of the paper's Table 4-2 (16, 512, 1000, 4096 and "
       "6859 spheres), as a scene file (docs/calibration.md gives the geometry)");
-  cmd->add_option("spheres", o->spheres,
-                  fmt::format("Number of spheres, 1 to {}: a x a in the near face and spheres / a^2 deep, a "
-                              "the largest whole number with a^2 dividing it and no more than the depth",
-                              sim::kMaxLatticeSpheres))
+  add_option(*cmd, "spheres", o->spheres,
+             fmt::format("Number of spheres, 1 to {}: a x a in the near face and spheres / a^2 deep, a the largest "
+                         "whole number with a^2 dividing it and no more than the depth",
+                         sim::kMaxLatticeSpheres),
+             whole_number(1, sim::kMaxLatticeSpheres)
+                 .description(fmt::format("a whole number from 1 to {}", sim::kMaxLatticeSpheres)))
       ->required();
-  cmd->add_option("-o,--output", o->output, "Scene file to write (.csg)")->required();
-  cmd->add_option("--size", o->size, "The camera's image size WxH")->default_val("512x512");
+  // Its usage errors quote what an image --output accepts, as they always have.
+  accepts(cmd->add_option("-o,--output", o->output, "Scene file to write (.csg)")->required(),
+          CLI::Validator(image_output_check().get_description()));
+  add_option(*cmd, "--size", o->size, "The camera's image size WxH", image_size_check())->default_val("512x512");
   return [o] {
-    const int spheres = parse_whole_option("spheres", o->spheres, 1, sim::kMaxLatticeSpheres);
-    const auto [width, height] = parse_pair_option("--size", o->size, "WxH", kMaxImageSide);
+    const int spheres = whole_value(checked(o->spheres));
+    const auto [width, height] = pair_value(checked(o->size));
     StagedOutputs outputs({{"--output", o->output}}, {});
     const sim::LatticeShape shape = sim::lattice_shape(spheres);
     sim::write_text_file(outputs["--output"], sim::lattice_scene_text(shape, width, height));

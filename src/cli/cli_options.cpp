@@ -7,131 +7,115 @@
 
 #include <fmt/core.h>
 
-#include <cctype>
-#include <charconv>
 #include <filesystem>
-#include <limits>
+#include <tuple>
 
 namespace capsim::cli {
 
+CLI::Validator image_size_check() {
+  return whole_number_pair("WxH", kMaxImageSide)
+      .description(fmt::format("WxH, W and H whole numbers from 1 to {}, e.g. 640x480", kMaxImageSide));
+}
+
+CLI::Validator host_threads_check() {
+  return whole_number(0, kMaxThreadsOption)
+      .description(fmt::format("0 to {}; 0 = all hardware threads", kMaxThreadsOption));
+}
+
+CLI::Validator image_output_check() {
+  return satisfying(is_supported_image_path, "has an unsupported image type")
+      .description("a path ending in .png or .exr");
+}
+
+CLI::Validator shipped_models_check() {
+  return refusing(CLI::ExistingDirectory, "is not a directory")
+      .description("a directory holding the shipped models (balls.csg, chess.csg, ..., disb/)");
+}
+
+CLI::Validator flag_values() { return CLI::Validator("no value, or true or false"); }
+
 void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
-  cmd.add_option("scene", o.scenes,
-                 "Scene file (OpenSCAD CSG grammar; see docs/scene-format.md); several files are the "
-                 "frames of one sequence, e.g. OpenSCAD's --animate exports (docs/animation.md)");
-  cmd.add_option("--frames", o.frames,
-                 fmt::format("Animate the one scene file as 'openscad --animate K' does: K frames, "
-                             "1 to {}, at $t = k / K for k = 0 .. K-1, written as out00000.png, ... "
-                             "(docs/animation.md)",
-                             kMaxFramesOption));
-  cmd.add_option("-o,--output", o.output, "Output image (required): .png (8-bit sRGB) or .exr (linear "
-                                          "float R, G, B, A, Z, id)");
-  cmd.add_option("--size", o.size,
-                 fmt::format("Image size WxH, W and H from 1 to {} (default: the scene camera's, or "
-                             "512x512)",
-                             kMaxImageSide));
-  cmd.add_option("--grid", o.grid,
-                 fmt::format("Voxel grid divisions per axis, 1 to {}, or 'auto' (twice the cube root of "
-                             "the primitive count, 8 to 64)",
-                             kMaxGridDivisions))
+  add_option(cmd, "scene", o.scenes,
+             "Scene file (OpenSCAD CSG grammar; see docs/scene-format.md); several files are the frames of one "
+             "sequence, e.g. OpenSCAD's --animate exports (docs/animation.md)",
+             CLI::Validator("one or more scene files in the CSG grammar of docs/scene-format.md (several are the "
+                            "frames of a sequence)"));
+  add_option(cmd, "--frames", o.frames,
+             fmt::format("Animate the one scene file as 'openscad --animate K' does: K frames, 1 to {}, at $t = k "
+                         "/ K for k = 0 .. K-1, written as out00000.png, ... (docs/animation.md)",
+                         kMaxFramesOption),
+             whole_number(1, kMaxFramesOption)
+                 .description(fmt::format("1 to {}, with one scene file", kMaxFramesOption)));
+  add_option(cmd, "-o,--output", o.output,
+             "Output image (required): .png (8-bit sRGB) or .exr (linear float R, G, B, A, Z, id)",
+             image_output_check());
+  add_option(cmd, "--size", o.size,
+             fmt::format("Image size WxH, W and H from 1 to {} (default: the scene camera's, or 512x512)",
+                         kMaxImageSide),
+             image_size_check());
+  add_option(cmd, "--grid", o.grid,
+             fmt::format("Voxel grid divisions per axis, 1 to {}, or 'auto' (twice the cube root of the primitive "
+                         "count, 8 to 64)",
+                         kMaxGridDivisions),
+             CLI::Validator(
+                 [whole = whole_number(1, kMaxGridDivisions)](std::string& value) {
+                   return value == "auto" ? std::string() : whole(value);
+                 },
+                 fmt::format("1 to {}, or auto", kMaxGridDivisions)))
       ->default_val("auto");
-  cmd.add_option("--threads", o.threads,
-                 fmt::format("Host threads, 0 to {} (0 = all hardware threads; more than the host has "
-                             "run as many as it has); the output does not depend on it",
-                             kMaxThreadsOption))
+  add_option(cmd, "--threads", o.threads,
+             fmt::format("Host threads, 0 to {} (0 = all hardware threads; more than the host has run as many as "
+                         "it has); the output does not depend on it",
+                         kMaxThreadsOption),
+             host_threads_check())
       ->default_val("0");
-  cmd.add_option("--max-memory", o.max_memory,
-                 "Refuse a run whose image buffers would need more memory than this: bytes, or with K, "
-                 "M, G or T (powers of 1024), e.g. 8G (default: the memory available, or less if the "
-                 "process has a limit; see README)");
-  cmd.add_flag("--primary-only", o.primary_only,
-               "Trace only primary rays with local shading (no shadow, reflection or "
-               "refraction rays), as in the paper's Table 4-2");
-  cmd.add_option("--aa", o.aa,
-                 fmt::format("Adaptive antialiasing from pixel-corner samples, 0 to {} levels of "
-                             "subdivision (0 = one sample at each pixel centre; docs/antialiasing.md)",
-                             kMaxAntialiasDepth))
+  add_option(cmd, "--max-memory", o.max_memory,
+             "Refuse a run whose image buffers would need more memory than this: bytes, or with K, M, G or T "
+             "(powers of 1024), e.g. 8G (default: the memory available, or less if the process has a limit; see "
+             "README)",
+             byte_size().description("a whole number of bytes, or of K, M, G or T (powers of 1024), e.g. 8G"));
+  accepts(cmd.add_flag("--primary-only", o.primary_only,
+                       "Trace only primary rays with local shading (no shadow, reflection or refraction rays), as "
+                       "in the paper's Table 4-2"),
+          flag_values());
+  add_option(cmd, "--aa", o.aa,
+             fmt::format("Adaptive antialiasing from pixel-corner samples, 0 to {} levels of subdivision (0 = one "
+                         "sample at each pixel centre; docs/antialiasing.md)",
+                         kMaxAntialiasDepth),
+             whole_number(0, kMaxAntialiasDepth)
+                 .description(fmt::format("0 to {}; 0 = one sample at each pixel centre", kMaxAntialiasDepth)))
       ->default_val("0");
-  cmd.add_option("--aa-threshold", o.aa_threshold,
-                 "Split a square whose corners differ by this much or more: |dR|+|dG|+|dB| of the "
-                 "8-bit sRGB colours / 255, 0 to 3")
+  add_option(cmd, "--aa-threshold", o.aa_threshold,
+             "Split a square whose corners differ by this much or more: |dR|+|dG|+|dB| of the 8-bit sRGB "
+             "colours / 255, 0 to 3",
+             decimal_number(0, 3).description("a number from 0 to 3"))
       ->default_val("0.3");
-}
-
-int parse_whole_option(const std::string& option, const std::string& value, int lo, int hi) {
-  long long v = 0;
-  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-  if (value.empty() || end != value.data() + value.size()) refuse(option, value, "is not a whole number");
-  if (ec == std::errc::result_out_of_range || v < lo || v > hi) refuse(option, value, "is out of range");
-  return static_cast<int>(v);
-}
-
-double parse_number_option(const std::string& option, const std::string& value, double lo, double hi) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), v);
-  if (value.empty() || end != value.data() + value.size() || ec != std::errc()) refuse(option, value, "is not a number");
-  if (!(v >= lo && v <= hi)) refuse(option, value, "is out of range");
-  return v;
-}
-
-std::pair<int, int> parse_pair_option(const std::string& option, const std::string& value,
-                                      const std::string& form, int max) {
-  const auto x = value.find_first_of("xX");
-  if (x == std::string::npos) refuse(option, value, "is not " + form);
-  const auto side = [&](const std::string& text) {
-    long long v = 0;
-    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-    if (text.empty() || end != text.data() + text.size()) refuse(option, value, "is not " + form);
-    if (ec == std::errc::result_out_of_range || v < 1 || v > max) refuse(option, value, "is out of range");
-    return static_cast<int>(v);
-  };
-  const int first = side(value.substr(0, x));
-  return {first, side(value.substr(x + 1))};
-}
-
-std::uint64_t parse_bytes_option(const std::string& option, const std::string& value) {
-  std::string digits = value;
-  int shift = 0;
-  if (!digits.empty()) {
-    const std::string units = "KMGT";
-    const auto unit = units.find(static_cast<char>(std::toupper(static_cast<unsigned char>(digits.back()))));
-    if (unit != std::string::npos) {
-      shift = 10 * static_cast<int>(unit + 1);
-      digits.pop_back();
-    }
-  }
-  std::uint64_t v = 0;
-  const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (digits.empty() || end != digits.data() + digits.size()) refuse(option, value, "is not a size");
-  if (ec == std::errc::result_out_of_range || v == 0 || v > (std::numeric_limits<std::uint64_t>::max() >> shift))
-    refuse(option, value, "is out of range");
-  return v << shift;
 }
 
 TracerSettings check_tracer_options(const TracerOptions& o) {
   TracerSettings s;
-  if (o.scenes.empty()) throw UsageError(fmt::format("SCENE is required (accepted: {})", accepted_values("scene")));
-  s.scenes = o.scenes;
-  s.frames = static_cast<int>(o.scenes.size());
-  if (!o.frames.empty()) {
-    if (o.scenes.size() > 1)
+  if (o.scenes.text.empty())
+    throw UsageError(fmt::format("SCENE is required (accepted: {})", accepted_values(*o.scenes.option)));
+  s.scenes = o.scenes.text;
+  s.frames = static_cast<int>(s.scenes.size());
+  if (!o.frames.text.empty()) {
+    if (s.scenes.size() > 1)
       throw UsageError(fmt::format("--frames animates one scene file, not a sequence of {} (the files of a "
                                    "sequence already are its frames)",
-                                   o.scenes.size()));
-    s.frames = parse_whole_option("--frames", o.frames, 1, kMaxFramesOption);
+                                   s.scenes.size()));
+    s.frames = whole_value(checked(o.frames));
     s.animate = true;
   }
-  if (o.output.empty())
-    throw UsageError(fmt::format("-o/--output is required (accepted: {})", accepted_values("--output")));
-  if (!is_supported_image_path(o.output)) refuse("--output", o.output, "has an unsupported image type");
-  s.output = o.output;
-  if (!o.size.empty())
-    std::tie(s.prepare.width, s.prepare.height) = parse_pair_option("--size", o.size, "WxH", kMaxImageSide);
-  if (o.grid != "auto") s.prepare.grid = parse_whole_option("--grid", o.grid, 1, kMaxGridDivisions);
-  s.threads = parse_whole_option("--threads", o.threads, 0, kMaxThreadsOption);
-  if (!o.max_memory.empty()) s.max_memory = parse_bytes_option("--max-memory", o.max_memory);
+  if (o.output.text.empty())
+    throw UsageError(fmt::format("-o/--output is required (accepted: {})", accepted_values(*o.output.option)));
+  s.output = checked(o.output);
+  if (!o.size.text.empty()) std::tie(s.prepare.width, s.prepare.height) = pair_value(checked(o.size));
+  if (const std::string& grid = checked(o.grid); grid != "auto") s.prepare.grid = whole_value(grid);
+  s.threads = whole_value(checked(o.threads));
+  if (!o.max_memory.text.empty()) s.max_memory = byte_size_value(checked(o.max_memory));
   s.trace.primary_only = o.primary_only;
-  s.aa.depth = parse_whole_option("--aa", o.aa, 0, kMaxAntialiasDepth);
-  s.aa.threshold = parse_number_option("--aa-threshold", o.aa_threshold, 0, 3);
+  s.aa.depth = whole_value(checked(o.aa));
+  s.aa.threshold = number_value(checked(o.aa_threshold));
   return s;
 }
 

@@ -5,6 +5,7 @@
 #include "capsim/antialias.h"
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"
+#include "cli/option_checks.h"
 
 #include <CLI/CLI.hpp>
 
@@ -23,18 +24,19 @@ inline constexpr int kMaxThreadsOption = 1024;
 // (out00000.png ... out99999.png).
 inline constexpr int kMaxFramesOption = 99999;
 
-// The options as typed; check_tracer_options turns them into settings.
+// The options as typed, each registered with what it accepts;
+// check_tracer_options checks them and turns them into settings.
 struct TracerOptions {
-  std::vector<std::string> scenes;  // one scene, or the frames of a sequence
-  std::string frames;               // --frames K; empty = not given
-  std::string output;
-  std::string size;           // "WxH"; empty = the scene camera's size
-  std::string grid = "auto";  // divisions per axis, or "auto"
-  std::string threads = "0";  // 0 = all hardware threads
-  std::string max_memory;     // e.g. "8G"; empty = what the machine and process limits leave
+  OptionText<std::vector<std::string>> scenes;  // one scene, or the frames of a sequence
+  OptionText<> frames;                          // --frames K; empty = not given
+  OptionText<> output;
+  OptionText<> size;          // "WxH"; empty = the scene camera's size
+  OptionText<> grid{"auto"};  // divisions per axis, or "auto"
+  OptionText<> threads{"0"};  // 0 = all hardware threads
+  OptionText<> max_memory;    // e.g. "8G"; empty = what the machine and process limits leave
   bool primary_only = false;
-  std::string aa = "0";              // antialiasing levels
-  std::string aa_threshold = "0.3";  // colour difference that splits a square
+  OptionText<> aa{"0"};              // antialiasing levels
+  OptionText<> aa_threshold{"0.3"};  // colour difference that splits a square
 };
 
 // The options checked and parsed.
@@ -58,22 +60,27 @@ struct TracerSettings {
 // The memory a command's image buffers take for `frames` frames of an image size.
 using MemoryNeed = std::function<std::uint64_t(ImageSize, int frames)>;
 
-// Registers the shared options on a subcommand, each with its help text.
+// What --size and --threads accept, for every command that has them: an
+// image size WxH and a host thread count.
+CLI::Validator image_size_check();
+CLI::Validator host_threads_check();
+
+// What an image --output accepts: a path ending in .png or .exr.
+CLI::Validator image_output_check();
+
+// What --scenes accepts (repro, bench modes): the directory of the shipped
+// models.
+CLI::Validator shipped_models_check();
+
+// A flag's values: none, or true or false.
+CLI::Validator flag_values();
+
+// Registers the shared options on a subcommand, each with its help text and
+// what it accepts.
 void add_tracer_options(CLI::App& cmd, TracerOptions& o);
 
 // Throws UsageError naming the first option that is missing or out of range.
 TracerSettings check_tracer_options(const TracerOptions& o);
-
-// A whole number in [lo, hi] for an option; throws UsageError otherwise.
-int parse_whole_option(const std::string& option, const std::string& value, int lo, int hi);
-
-// A number in [lo, hi] for an option; throws UsageError otherwise.
-double parse_number_option(const std::string& option, const std::string& value, double lo, double hi);
-
-// Two whole numbers in [1, max] written "AxB", for an option (--size, --cells)
-// whose form is named `form` ("WxH"); throws UsageError otherwise.
-std::pair<int, int> parse_pair_option(const std::string& option, const std::string& value,
-                                      const std::string& form, int max);
 
 // Parses the scene files and builds their grids; throws SceneError for scene
 // problems. Between the two, once the image size is known (it may come from

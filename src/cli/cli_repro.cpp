@@ -5,7 +5,6 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
-#include "cli/cli_usage.h"
 #include "paper/repro.h"
 #include "report/text_output.h"
 
@@ -24,10 +23,10 @@ namespace {
 struct ReproCliOptions {
   std::string output = "docs/reproduction.md";
   std::string images;  // default: images/ beside the output
-  std::string size = "512x512";
-  std::string scenes = "scenes";
-  std::string threads = "0";
-  std::string frames = "64";
+  OptionText<> size{"512x512"};
+  OptionText<> scenes{"scenes"};
+  OptionText<> threads{"0"};
+  OptionText<> frames{"64"};
 };
 
 }  // namespace
@@ -38,23 +37,28 @@ Command add_repro_command(CLI::App& app) {
       "repro",
       "Run every experiment of the paper (Tables 4-2 to 4-5 and 5-1, Graph 4-3) and write them beside the "
       "published figures, with the fit of the cost constants, as a Markdown report with SVG plots");
-  cmd->add_option("-o,--output", o->output, "The report")->default_val("docs/reproduction.md");
+  // Its usage errors quote what an image --output accepts, as they always have.
+  accepts(cmd->add_option("-o,--output", o->output, "The report")->default_val("docs/reproduction.md"),
+          CLI::Validator(image_output_check().get_description()));
   cmd->add_option("--images", o->images,
                   "Directory for the plots table-4-2.svg and graph-4-3.svg (default: images/ beside the report)");
-  cmd->add_option("--size", o->size, "Screen of every run, WxH (the paper's is 512x512)")->default_val("512x512");
-  cmd->add_option("--scenes", o->scenes, "Directory of the models (balls.csg, chess.csg, ..., disb/)")
+  add_option(*cmd, "--size", o->size, "Screen of every run, WxH (the paper's is 512x512)", image_size_check())
+      ->default_val("512x512");
+  add_option(*cmd, "--scenes", o->scenes, "Directory of the models (balls.csg, chess.csg, ..., disb/)",
+             shipped_models_check())
       ->default_val("scenes");
-  cmd->add_option("--disb-frames", o->frames, "DISB frames to run for Table 4-5, 0 to 64 (0: leave it not run)")
+  add_option(*cmd, "--disb-frames", o->frames, "DISB frames to run for Table 4-5, 0 to 64 (0: leave it not run)",
+             whole_number(0, 64).description("0 to 64; 0 = leave Table 4-5 not run"))
       ->default_val("64");
-  cmd->add_option("--threads", o->threads, "Host threads (0 = all); the report does not depend on it")
+  add_option(*cmd, "--threads", o->threads, "Host threads (0 = all); the report does not depend on it",
+             host_threads_check())
       ->default_val("0");
   return [o] {
     sim::ReproOptions options;
-    std::tie(options.width, options.height) = parse_pair_option("--size", o->size, "WxH", kMaxImageSide);
-    options.threads = parse_whole_option("--threads", o->threads, 0, kMaxThreadsOption);
-    options.table_4_5_frames = parse_whole_option("--disb-frames", o->frames, 0, 64);
-    options.scenes_dir = o->scenes;
-    if (!std::filesystem::is_directory(o->scenes)) refuse("--scenes", o->scenes, "is not a directory");
+    std::tie(options.width, options.height) = pair_value(checked(o->size));
+    options.threads = whole_value(checked(o->threads));
+    options.table_4_5_frames = whole_value(checked(o->frames));
+    options.scenes_dir = checked(o->scenes);
     const std::filesystem::path report(o->output);
     const std::filesystem::path images =
         o->images.empty() ? report.parent_path() / "images" : std::filesystem::path(o->images);

@@ -6,6 +6,7 @@
 #include "cli/cli_outputs.h"
 #include "cli/cli_usage.h"
 #include "machine/machine.h"
+#include "paper/simulate_command.h"
 #include "report/heatmap.h"
 #include "report/html_report.h"
 #include "report/sim_report.h"
@@ -28,26 +29,34 @@ namespace capsim::cli {
 namespace {
 
 struct SimulateOptions {
-  std::string cells = "8x8";
-  std::string mode = "dot";
-  std::string profile = "cap";
-  std::string report;   // JSON report path; empty = none
-  std::string trace;    // Chrome trace-event JSON path; empty = none
-  std::string heatmap;  // PNG path; empty = none
-  std::string html;     // HTML report path; empty = none
+  OptionText<> cells{"8x8"};
+  OptionText<> mode{"dot"};
+  OptionText<> profile{"cap"};
+  std::string report;    // JSON report path; empty = none
+  std::string trace;     // Chrome trace-event JSON path; empty = none
+  OptionText<> heatmap;  // PNG path; empty = none
+  std::string html;      // HTML report path; empty = none
   bool frame_average = false;
 };
 
-// The run's options as a command line, for the HTML report.
-std::string command_line(const TracerOptions& o, const SimulateOptions& s, int width, int height) {
-  std::string line = fmt::format("capsim simulate {} -o {} --size {}x{} --grid {} --cells {} --mode {} --profile {}",
-                                 fmt::join(o.scenes, " "), o.output, width, height, o.grid, s.cells, s.mode,
-                                 s.profile);
-  if (!o.frames.empty()) line += fmt::format(" --frames {}", o.frames);
-  if (o.primary_only) line += " --primary-only";
-  if (o.aa != "0") line += fmt::format(" --aa {} --aa-threshold {}", o.aa, o.aa_threshold);
-  if (s.frame_average) line += " --frame-average";
-  return line + fmt::format(" --threads {}", o.threads);
+// The run's settings, for the command line the HTML report gives.
+sim::SimulateSettings run_settings(const TracerSettings& t, const sim::MachineConfig& config,
+                                   const std::string& profile, int width, int height) {
+  sim::SimulateSettings s;
+  s.scenes = t.scenes;
+  s.output = t.output;
+  s.width = width;
+  s.height = height;
+  s.grid = t.prepare.grid;
+  s.cells = config.cells;
+  s.mode = config.mode;
+  s.profile = profile;
+  s.frames = t.animate ? t.frames : 0;
+  s.primary_only = t.trace.primary_only;
+  s.aa = t.aa;
+  s.frame_average = config.frame_average;
+  s.threads = t.threads;
+  return s;
 }
 
 bool is_builtin_profile(const std::string& value) {
@@ -55,30 +64,27 @@ bool is_builtin_profile(const std::string& value) {
   return std::find(builtin.begin(), builtin.end(), value) != builtin.end();
 }
 
-// A built-in profile's name, or a profile file that can be opened; throws
-// UsageError otherwise. The file's content is checked as it loads (a bad file
-// is an input error, like a bad scene).
-void check_profile_option(const std::string& value) {
-  if (is_builtin_profile(value)) return;
+// A regular file that opens for reading. (CLI::ExistingFile would also take
+// a device or a pipe.)
+bool is_readable_file(const std::string& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(value, ec) || !std::ifstream(value))
-    refuse("--profile", value, "is neither a built-in profile nor a readable file");
+  return std::filesystem::is_regular_file(path, ec) && std::ifstream(path);
 }
 
 sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
   sim::MachineConfig config;
-  const auto [rows, cols] = parse_pair_option("--cells", o.cells, "RxC", sim::kMaxGridSide);
+  const auto [rows, cols] = pair_value(checked(o.cells));
   config.cells = sim::CellGrid{rows, cols};
-  const std::optional<sim::PixelMode> mode = sim::parse_pixel_mode(o.mode);
-  if (!mode) refuse("--mode", o.mode, "is not a pixel mode");
-  config.mode = *mode;
-  check_profile_option(o.profile);
-  if (!o.heatmap.empty() && !is_png_path(o.heatmap)) refuse("--heatmap", o.heatmap, "is not a .png path");
+  config.mode = *sim::parse_pixel_mode(checked(o.mode));
+  // A profile file's content is checked as it loads (a bad file is an input
+  // error, like a bad scene).
+  checked(o.profile);
+  if (!o.heatmap.text.empty()) checked(o.heatmap);
   config.frame_average = o.frame_average;
   if (o.frame_average && config.mode != sim::PixelMode::Dot)
     throw UsageError(fmt::format("--frame-average turns the dot pattern from frame to frame: it needs --mode dot, "
                                  "not {}",
-                                 o.mode));
+                                 o.mode.text));
   return config;
 }
 
@@ -92,26 +98,39 @@ Command add_simulate_command(CLI::App& app) {
       "Simulate the Cellular Array Processor running the tracer: the screen its video bus shows, "
       "per-cell times and the load spread (an .exr output also carries a 'cycles' channel)");
   add_tracer_options(*cmd, *opts);
-  cmd->add_option("--cells", sim->cells, fmt::format("Cell grid RxC, 1x1 to {0}x{0}", sim::kMaxGridSide))
+  add_option(*cmd, "--cells", sim->cells, fmt::format("Cell grid RxC, 1x1 to {0}x{0}", sim::kMaxGridSide),
+             whole_number_pair("RxC", sim::kMaxGridSide)
+                 .description(fmt::format("RxC, R and C whole numbers from 1 to {}, e.g. 8x8", sim::kMaxGridSide)))
       ->default_val("8x8");
-  cmd->add_option("--mode", sim->mode,
-                  "Pixel mode of the window controllers: block (a rectangle per cell), line (every "
-                  "(R*C)-th row) or dot (one pixel of every RxC square)")
+  const std::vector<std::string> modes = {sim::to_string(sim::PixelMode::Block), sim::to_string(sim::PixelMode::Line),
+                                          sim::to_string(sim::PixelMode::Dot)};
+  add_option(*cmd, "--mode", sim->mode,
+             "Pixel mode of the window controllers: block (a rectangle per cell), line (every (R*C)-th row) or dot "
+             "(one pixel of every RxC square)",
+             refusing(CLI::IsMember(modes), "is not a pixel mode").description("block, line or dot"))
       ->default_val("dot");
-  cmd->add_option("--profile", sim->profile,
-                  "Cost profile: cap (a CAP cell), m380 (the mainframe; use with --cells 1x1) or a "
-                  "profile JSON file (docs/simulation.md)")
+  add_option(*cmd, "--profile", sim->profile,
+             "Cost profile: cap (a CAP cell), m380 (the mainframe; use with --cells 1x1) or a profile JSON file "
+             "(docs/simulation.md)",
+             refusing(CLI::IsMember(sim::builtin_profile_names()) |
+                          satisfying(is_readable_file, "is not a readable file"),
+                      "is neither a built-in profile nor a readable file")
+                 .description("cap, m380 or a profile JSON file as docs/simulation.md describes"))
       ->default_val("cap");
-  cmd->add_option("--report", sim->report, "Write the report as JSON to this file");
-  cmd->add_option("--trace", sim->trace,
-                  "Write the timeline as Chrome trace-event JSON (opens in ui.perfetto.dev)");
-  cmd->add_option("--heatmap", sim->heatmap, "Write a PNG of per-cell busy time on the cell grid");
+  accepts(cmd->add_option("--report", sim->report, "Write the report as JSON to this file"),
+          CLI::Validator("a file path"));
+  accepts(cmd->add_option("--trace", sim->trace,
+                          "Write the timeline as Chrome trace-event JSON (opens in ui.perfetto.dev)"),
+          CLI::Validator("a file path"));
+  add_option(*cmd, "--heatmap", sim->heatmap, "Write a PNG of per-cell busy time on the cell grid",
+             satisfying(is_png_path, "is not a .png path").description("a path ending in .png"));
   cmd->add_option("--html", sim->html,
                   "Write one self-contained HTML page of the run: the screen filling over simulated time, "
                   "the cells, the timeline and the tables (docs/report.md)");
-  cmd->add_flag("--frame-average", sim->frame_average,
-                "Frame-averaged distribution (dot mode): the dot pattern turns every frame, and the cells run "
-                "through groups of RxC frames without waiting for each other (docs/animation.md)");
+  accepts(cmd->add_flag("--frame-average", sim->frame_average,
+                        "Frame-averaged distribution (dot mode): the dot pattern turns every frame, and the cells "
+                        "run through groups of RxC frames without waiting for each other (docs/animation.md)"),
+          flag_values());
 
   return [opts, sim] {
     const TracerSettings settings = check_tracer_options(*opts);
@@ -122,29 +141,22 @@ Command add_simulate_command(CLI::App& app) {
     const int frames = settings.frames;
     const bool numbered = settings.numbered_outputs();
     std::vector<std::string> inputs = settings.scenes;
-    if (!is_builtin_profile(sim->profile)) inputs.push_back(sim->profile);
+    if (!is_builtin_profile(sim->profile.text)) inputs.push_back(sim->profile.text);
     std::vector<OutputOption> staged;
     for (int k = 0; k < frames; ++k)
       staged.push_back({frame_output_option(k, numbered), frame_output(settings.output, k, numbered)});
-    for (const OutputOption& o : std::vector<OutputOption>{
-             {"--report", sim->report}, {"--trace", sim->trace}, {"--heatmap", sim->heatmap}, {"--html", sim->html}})
+    for (const OutputOption& o : std::vector<OutputOption>{{"--report", sim->report},
+                                                           {"--trace", sim->trace},
+                                                           {"--heatmap", sim->heatmap.text},
+                                                           {"--html", sim->html}})
       staged.push_back(o);
     StagedOutputs outputs(staged, inputs);
-    config.profile = sim::load_cost_profile(sim->profile);
+    config.profile = sim::load_cost_profile(sim->profile.text);
     config.completion_cycles = !sim->html.empty();
 
     const auto started = std::chrono::steady_clock::now();
-    const std::vector<PreparedScene> scenes = load_scenes(settings, [config, png](ImageSize size, int count) {
-      // The run's peak, or its result while a screen is written (a PNG
-      // compresses the screen's bytes; an EXR copies its cycles and,
-      // antialiased, its samples into channels, then makes planes of all).
-      const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
-      const std::size_t extra = config.aa.depth > 0 ? 2 : 1;
-      const std::uint64_t writing =
-          sim::simulation_result_memory(config, size.width, size.height, count) +
-          (png ? write_png_rgb8_memory(size.width, size.height)
-               : extra * pixels * sizeof(float) + write_image_memory(".exr", size.width, size.height, extra));
-      return std::max(sim::simulation_memory(config, size.width, size.height, count), writing);
+    const std::vector<PreparedScene> scenes = load_scenes(settings, [config](ImageSize size, int count) {
+      return sim::simulation_memory_until_written(config, size.width, size.height, count);
     });
     std::vector<std::unique_ptr<Tracer>> tracers;
     std::vector<const Tracer*> frame_tracers;
@@ -170,11 +182,14 @@ Command add_simulate_command(CLI::App& app) {
     }
     if (!sim->report.empty()) sim::write_text_file(outputs["--report"], sim::report_json_text(result));
     if (!sim->trace.empty()) sim::write_text_file(outputs["--trace"], sim::chrome_trace_text(result));
-    if (!sim->heatmap.empty())
+    if (!sim->heatmap.text.empty())
       write_image(outputs["--heatmap"], sim::to_framebuffer(sim::render_heatmap(result)));
     if (!sim->html.empty()) {
       const sim::RunFacts facts{fmt::format("{}", fmt::join(settings.scenes, " ")),
-                                command_line(*opts, *sim, result.width, result.height), wall.count(),
+                                sim::simulate_command(run_settings(settings, config, sim->profile.text, result.width,
+                                                                   result.height),
+                                                      sim::CommandForm::EveryOption),
+                                wall.count(),
                                 CAPSIM_VERSION};
       sim::write_text_file(outputs["--html"], sim::html_report(result, facts));
     }

@@ -1,10 +1,6 @@
 #include "cli/cli_usage.h"
 
-#include "capsim/prepared_scene.h"
-#include "capsim/voxel_grid.h"
-#include "cli/cli_options.h"
-#include "machine/cell_grid.h"
-#include "paper/lattice_scene.h"
+#include "cli/option_checks.h"
 
 #include <fmt/format.h>
 
@@ -12,33 +8,6 @@
 #include <numeric>
 
 namespace capsim::cli {
-
-std::string accepted_values(const std::string& option) {
-  if (option == "scene")
-    return "one or more scene files in the CSG grammar of docs/scene-format.md (several are the frames of a "
-           "sequence)";
-  if (option == "--output") return "a path ending in .png or .exr";
-  if (option == "--frames") return fmt::format("1 to {}, with one scene file", kMaxFramesOption);
-  if (option == "--size")
-    return fmt::format("WxH, W and H whole numbers from 1 to {}, e.g. 640x480", kMaxImageSide);
-  if (option == "--grid") return fmt::format("1 to {}, or auto", kMaxGridDivisions);
-  if (option == "--threads") return fmt::format("0 to {}; 0 = all hardware threads", kMaxThreadsOption);
-  if (option == "--cells")
-    return fmt::format("RxC, R and C whole numbers from 1 to {}, e.g. 8x8", sim::kMaxGridSide);
-  if (option == "--mode") return "block, line or dot";
-  if (option == "--profile") return "cap, m380 or a profile JSON file as docs/simulation.md describes";
-  if (option == "--heatmap") return "a path ending in .png";
-  if (option == "--report" || option == "--trace") return "a file path";
-  if (option == "--max-memory") return "a whole number of bytes, or of K, M, G or T (powers of 1024), e.g. 8G";
-  if (option == "--primary-only" || option == "--frame-average") return "no value, or true or false";
-  if (option == "--aa") return fmt::format("0 to {}; 0 = one sample at each pixel centre", kMaxAntialiasDepth);
-  if (option == "--aa-threshold") return "a number from 0 to 3";
-  if (option == "spheres") return fmt::format("a whole number from 1 to {}", sim::kMaxLatticeSpheres);
-  if (option == "--disb-frames") return "0 to 64; 0 = leave Table 4-5 not run";
-  if (option == "--scenes") return "a directory holding the shipped models (balls.csg, chess.csg, ..., disb/)";
-  if (option == "--plot") return "a path ending in .svg";
-  return "";
-}
 
 std::string shown(const std::string& value) {
   std::string out;
@@ -53,10 +22,6 @@ std::string shown(const std::string& value) {
     }
   }
   return quote ? "'" + out + "'" : out;
-}
-
-void refuse(const std::string& option, const std::string& value, const std::string& problem) {
-  throw UsageError(fmt::format("{} {} {} (accepted: {})", option, shown(value), problem, accepted_values(option)));
 }
 
 std::string command_name(const CLI::App& app) {
@@ -115,8 +80,18 @@ std::string option_in_message(const std::string& message) {
   return message.substr(0, colon);
 }
 
-std::string with_accepted(const std::string& text, const std::string& option) {
-  const std::string accepted = accepted_values(option);
+// What the option named `name` ("--size") of the command line's innermost
+// command accepts, or of the commands around it; "" if none has it.
+std::string accepted_by(const CLI::App& app, const std::string& name) {
+  std::vector<const CLI::App*> commands{&app};
+  while (!commands.back()->get_subcommands().empty()) commands.push_back(commands.back()->get_subcommands().front());
+  for (auto cmd = commands.rbegin(); cmd != commands.rend(); ++cmd)
+    if (const CLI::Option* option = (*cmd)->get_option_no_throw(name)) return accepted_values(*option);
+  return "";
+}
+
+std::string with_accepted(const CLI::App& app, const std::string& text, const std::string& option) {
+  const std::string accepted = option.empty() ? "" : accepted_by(app, option);
   return accepted.empty() ? text : fmt::format("{} (accepted: {})", text, accepted);
 }
 
@@ -193,16 +168,17 @@ std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& e) 
     const auto start = text.find("--"), equals = text.find(" = ");
     if (start != std::string::npos && equals != std::string::npos && equals > start) {
       const std::string name = text.substr(start, equals - start);
-      return with_accepted(fmt::format("{} {} is not a valid value", name, shown(text.substr(equals + 3))), name);
+      return with_accepted(app, fmt::format("{} {} is not a valid value", name, shown(text.substr(equals + 3))),
+                           name);
     }
   }
   const std::string option = option_in_message(message);
   if (dynamic_cast<const CLI::ArgumentMismatch*>(&e) && !option.empty()) {
-    if (message.find("missing") != std::string::npos) return with_accepted(option + " needs a value", option);
+    if (message.find("missing") != std::string::npos) return with_accepted(app, option + " needs a value", option);
     if (message.find("received") != std::string::npos)
-      return with_accepted(option + " is given more than once", option);
+      return with_accepted(app, option + " is given more than once", option);
   }
-  return with_accepted(message, option);
+  return with_accepted(app, message, option);
 }
 
 }  // namespace capsim::cli

@@ -18,20 +18,13 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// What an option (by its long name, or "scene") accepts, as the error messages
-// state it; "" for an option with no range to state.
-std::string accepted_values(const std::string& option);
-
-// Throws UsageError "OPTION VALUE PROBLEM (accepted: RANGE)".
-[[noreturn]] void refuse(const std::string& option, const std::string& value, const std::string& problem);
-
 // value as a message quotes it: control bytes escaped (\xNN), quoted when empty
 // or holding a space.
 std::string shown(const std::string& value);
 
 // One line for a CLI11 parse error (the command's name not included): names
-// the option or argument at fault and what is accepted, and for an unknown
-// command or option the closest known name.
+// the option or argument at fault and what it accepts (accepted_values), and
+// for an unknown command or option the closest known name.
 std::string describe_parse_error(const CLI::App& app, const CLI::ParseError& e);
 
 // "capsim" and the name of the subcommand parsed, if any: the prefix of messages.

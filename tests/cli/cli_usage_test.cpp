@@ -185,7 +185,100 @@ INSTANTIATE_TEST_SUITE_P(
                   "capsim bench modes: --json OUT/none/a.json: directory OUT/none does not exist"}),
     case_name);
 
+// Values at the edge of what each check takes: plain decimals only (010 is
+// ten, not eight), no NaN, the exact names of modes, a regular file for a
+// profile.
+INSTANTIATE_TEST_SUITE_P(
+    Values, CliUsageError,
+    ::testing::Values(
+        UsageCase{"render BALLS -o OUT.png --aa 010",
+                  "capsim render: --aa 010 is out of range (accepted: 0 to 8; 0 = one sample at each pixel centre)"},
+        UsageCase{"render BALLS -o OUT.png --aa +1",
+                  "capsim render: --aa +1 is not a whole number (accepted: 0 to 8; 0 = one sample at each pixel "
+                  "centre)"},
+        UsageCase{"render BALLS -o OUT.png --threads 0x10",
+                  with("capsim render: --threads 0x10 is not a whole number", kThreadsRange)},
+        UsageCase{"render BALLS -o OUT.png --grid AUTO", with("capsim render: --grid AUTO is not a whole number", kGridRange)},
+        UsageCase{"render BALLS -o OUT.png --aa-threshold nan",
+                  "capsim render: --aa-threshold nan is out of range (accepted: a number from 0 to 3)"},
+        UsageCase{"render BALLS -o OUT.png --aa-threshold 0x1p0",
+                  "capsim render: --aa-threshold 0x1p0 is not a number (accepted: a number from 0 to 3)"},
+        UsageCase{"render BALLS -o OUT.png --size 8X0", with("capsim render: --size 8X0 is out of range", kSizeRange)},
+        UsageCase{"simulate BALLS -o OUT.png --mode DOT",
+                  "capsim simulate: --mode DOT is not a pixel mode (accepted: block, line or dot)"},
+        UsageCase{"simulate BALLS -o OUT.png --profile /dev/null",
+                  "capsim simulate: --profile /dev/null is neither a built-in profile nor a readable file "
+                  "(accepted: cap, m380 or a profile JSON file as docs/simulation.md describes)"},
+        UsageCase{"repro --scenes BALLS", "capsim repro: --scenes BALLS is not a directory (accepted: a directory "
+                                          "holding the shipped models (balls.csg, chess.csg, ..., disb/))"}),
+    case_name);
+
+// Several faults: the words first (an unknown option, one without its value,
+// one given twice), then each command's values in the order it reads them,
+// whatever the order they were typed in.
+INSTANTIATE_TEST_SUITE_P(
+    Order, CliUsageError,
+    ::testing::Values(
+        UsageCase{"render BALLS -o OUT.png --threads abc --treads 2",
+                  "capsim render: unknown option --treads; did you mean --threads? (capsim render --help lists "
+                  "every option)"},
+        UsageCase{"render BALLS -o OUT.png --size 0x1 --grid 3 --grid 4",
+                  with("capsim render: --grid is given more than once", kGridRange)},
+        UsageCase{"render BALLS -o OUT.png --size 0x1 --size 2x2", with("capsim render: --size is given more than once", kSizeRange)},
+        UsageCase{"render BALLS -o OUT.png --threads abc --aa", "capsim render: --aa needs a value (accepted: 0 to 8; "
+                                                                "0 = one sample at each pixel centre)"},
+        UsageCase{"render --threads abc", "capsim render: SCENE is required (accepted: one or more scene files in the "
+                                          "CSG grammar of docs/scene-format.md (several are the frames of a sequence))"},
+        UsageCase{"render BALLS BALLS --frames 0", "capsim render: --frames animates one scene file, not a sequence of 2 "
+                                                   "(the files of a sequence already are its frames)"},
+        UsageCase{"render BALLS --frames 0 --size 0x1", with("capsim render: --frames 0 is out of range", kFramesRange)},
+        UsageCase{"render BALLS --threads abc", "capsim render: -o/--output is required (accepted: a path ending in .png "
+                                                "or .exr)"},
+        UsageCase{"render BALLS -o OUT.jpg --size 0x1",
+                  "capsim render: --output OUT.jpg has an unsupported image type (accepted: a path ending in "
+                  ".png or .exr)"},
+        UsageCase{"render BALLS -o OUT.png --aa-threshold 4 --aa 9 --max-memory 0 --threads x --grid 0",
+                  with("capsim render: --grid 0 is out of range", kGridRange)},
+        UsageCase{"simulate BALLS -o OUT.png --frame-average --mode block --heatmap OUT.jpg",
+                  "capsim simulate: --heatmap OUT.jpg is not a .png path (accepted: a path ending in .png)"},
+        UsageCase{"simulate BALLS -o OUT.png --heatmap OUT.jpg --profile nope --mode bad --cells 0x8 --aa 9",
+                  "capsim simulate: --aa 9 is out of range (accepted: 0 to 8; 0 = one sample at each pixel centre)"},
+        UsageCase{"simulate BALLS -o OUT.png --heatmap OUT.jpg --profile nope --mode bad --cells 0x8",
+                  with("capsim simulate: --cells 0x8 is out of range", kCellsRange)},
+        UsageCase{"lattice 0", "capsim lattice: --output is required"},
+        UsageCase{"repro --scenes OUT --disb-frames 99 --threads x --size 0x1",
+                  with("capsim repro: --size 0x1 is out of range", kSizeRange)},
+        UsageCase{"repro --scenes OUT --disb-frames 99 --threads x", with("capsim repro: --threads x is not a whole number", kThreadsRange)},
+        UsageCase{"repro --scenes OUT --disb-frames 99",
+                  "capsim repro: --disb-frames 99 is out of range (accepted: 0 to 64; 0 = leave Table 4-5 not run)"},
+        UsageCase{"bench modes --plot OUT.png --scenes OUT --threads x",
+                  with("capsim bench modes: --threads x is not a whole number", kThreadsRange)},
+        UsageCase{"bench modes --plot OUT.png --scenes OUT",
+                  "capsim bench modes: --scenes OUT is not a directory (accepted: a directory holding the shipped "
+                  "models (balls.csg, chess.csg, ..., disb/))"}),
+    case_name);
+
 }  // namespace
+
+TEST(CliUsage, HelpComesBeforeAnyValueIsChecked) {
+  TempDir dir;
+  const RunResult r = run_capsim("render " + kBalls + " --threads abc --aa 99 --help", dir);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("--threads TEXT=0 "), std::string::npos) << r.out;
+  EXPECT_EQ(r.err, "");
+}
+
+TEST(CliUsage, HelpStatesRangesInWordsNotTheChecksDescriptions) {
+  // What each option accepts is attached to it for the messages; the help
+  // keeps its own sentences and CLI11's TEXT.
+  TempDir dir;
+  for (const std::string command : {"render", "simulate", "lattice", "repro", "bench modes"}) {
+    const RunResult r = run_capsim(command + " --help", dir);
+    EXPECT_EQ(r.status, 0) << command;
+    EXPECT_EQ(r.out.find("accepted"), std::string::npos) << command;
+    EXPECT_EQ(r.out.find("TEXT:"), std::string::npos) << command;
+  }
+}
 
 TEST(CliUsage, ProfileThatIsADirectoryIsAUsageError) {
   TempDir dir;

@@ -1,9 +1,12 @@
 // The memory a simulation's image buffers take, per pixel, as the estimate
 // checked before a run counts it.
 
+#include "capsim/image_io.h"
 #include "machine/machine.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace capsim {
 namespace {
@@ -34,6 +37,32 @@ TEST(MemoryEstimate, SimulateHoldsWhatEachScreenFormatNeedsPerPixel) {
   config.keep_received_corners = true;
   EXPECT_EQ(sim::simulation_memory(config, 640, 480, 64),
             per_frame + 64 * 640u * 480 * 3 * 12 + 64 * 640u * 480 * 3 * 4);
+}
+
+TEST(MemoryEstimate, UntilWrittenAddsWritingTheScreensToTheirFiles) {
+  sim::MachineConfig config;
+  const std::uint64_t pixels = 640u * 480;
+  // PNG: the result's 8-bit screen (3) and the compressor's buffers, more
+  // than the simulation's own peak (7 a pixel).
+  config.screen = sim::ScreenFormat::Srgb8;
+  const std::uint64_t png = 3 * pixels + write_png_rgb8_memory(640, 480);
+  EXPECT_EQ(sim::simulation_memory_until_written(config, 640, 480, 1),
+            std::max<std::uint64_t>(sim::simulation_memory(config, 640, 480, 1), png));
+  EXPECT_GT(png, sim::simulation_memory(config, 640, 480, 1));
+  // EXR: the result (28 a pixel), the cycles copied into a channel (4) and the
+  // planes of all channels; the peak (61) is still larger.
+  config.screen = sim::ScreenFormat::Float;
+  const std::uint64_t exr = 28 * pixels + 4 * pixels + write_image_memory(".exr", 640, 480, 1);
+  EXPECT_EQ(exr, 60 * pixels);
+  EXPECT_EQ(sim::simulation_memory_until_written(config, 640, 480, 1), 61 * pixels);
+  EXPECT_EQ(sim::simulation_memory_until_written(config, 640, 480, 3), sim::simulation_memory(config, 640, 480, 3));
+  // Antialiased EXR: also the samples, in the result (4) and as a channel (4),
+  // one more plane (4).
+  config.aa.depth = 1;
+  const std::uint64_t exr_aa = 32 * pixels + 8 * pixels + write_image_memory(".exr", 640, 480, 2);
+  EXPECT_EQ(exr_aa, 72 * pixels);
+  EXPECT_EQ(sim::simulation_memory_until_written(config, 640, 480, 1),
+            std::max<std::uint64_t>(sim::simulation_memory(config, 640, 480, 1), exr_aa));
 }
 
 }  // namespace
