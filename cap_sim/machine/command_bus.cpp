@@ -29,7 +29,7 @@ CommandBus::TransferAwaiter CommandBus::transfer(Endpoint sender, Endpoint recei
   return TransferAwaiter{*this, std::move(t)};
 }
 
-void CommandBus::request(BusTransfer* transfer, ProcessHandle sender) {
+void CommandBus::request(BusTransfer* transfer, std::coroutine_handle<> sender) {
   transfer->requested = kernel_.now();
   pending_.push_back(Request{transfer, sender, next_sequence_++});
   schedule_arbitration();

@@ -55,7 +55,7 @@ class CommandBus {
     CommandBus& bus;
     BusTransfer transfer;
     bool await_ready() const noexcept { return false; }
-    void await_suspend(ProcessHandle h) { bus.request(&transfer, h); }
+    void await_suspend(std::coroutine_handle<> h) { bus.request(&transfer, h); }
     BusTransfer await_resume() { return std::move(transfer); }
   };
   TransferAwaiter transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes,
@@ -67,10 +67,10 @@ class CommandBus {
  private:
   struct Request {
     BusTransfer* transfer;  // lives in the waiting sender's frame
-    ProcessHandle sender;
+    std::coroutine_handle<> sender;
     std::uint64_t sequence;
   };
-  void request(BusTransfer* transfer, ProcessHandle sender);
+  void request(BusTransfer* transfer, std::coroutine_handle<> sender);
   void schedule_arbitration();
   void arbitrate();
 

@@ -73,7 +73,7 @@ NeighbourLinks::SendAwaiter NeighbourLinks::send(CellId from, CellId to, std::ui
   return SendAwaiter{*this, std::move(m)};
 }
 
-void NeighbourLinks::start(LinkMessage m, ProcessHandle sender) {
+void NeighbourLinks::start(LinkMessage m, std::coroutine_handle<> sender) {
   m.sent = kernel_.now();
   const CellId from = m.from;
   kernel_.resume_at(forward(std::move(m), from), sender);

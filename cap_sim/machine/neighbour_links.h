@@ -69,7 +69,7 @@ class NeighbourLinks {
     NeighbourLinks& links;
     LinkMessage message;
     bool await_ready() const noexcept { return false; }
-    void await_suspend(ProcessHandle h) { links.start(std::move(message), h); }
+    void await_suspend(std::coroutine_handle<> h) { links.start(std::move(message), h); }
     void await_resume() const noexcept {}
   };
   SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, std::string label,
@@ -85,7 +85,7 @@ class NeighbourLinks {
  private:
   CellId next_hop(CellId at, CellId to) const;
   Direction direction_of(CellId at, CellId next) const;
-  void start(LinkMessage m, ProcessHandle sender);
+  void start(LinkMessage m, std::coroutine_handle<> sender);
   // Queues the message on the link from `at` toward its next hop; returns the
   // cycle its last bit leaves `at`.
   Cycles forward(LinkMessage m, CellId at);
