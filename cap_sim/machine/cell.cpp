@@ -49,7 +49,7 @@ Process Cell::run() {
     for (const std::string_view expected : unit_broadcasts(u == 0, unit.frames)) {
       const BusTransfer t = co_await bus_inbox_.receive();
       if (t.granted > waiting_since)
-        wire_.timeline.span(track_, "wait for host", "wait", waiting_since, t.granted);
+        wire_.timeline.span(track_, "wait for host", SpanCategory::Wait, waiting_since, t.granted);
       take_in(t, expected);
       waiting_since = wire_.kernel.now();
     }
@@ -72,7 +72,7 @@ Process Cell::run() {
         record_.frame_busy[f] = video_[f].work.total();
         wire_.timeline.span(
             track_, frame_name(fmt::format("trace {} pixels", wire_.frames[f].layout.window(id_).pixel_count()), f),
-            "compute", begin, wire_.kernel.now());
+            SpanCategory::Compute, begin, wire_.kernel.now());
       }
     } else {
       const CornerExchange& exchange = *unit.exchange;
@@ -88,7 +88,7 @@ Process Cell::run() {
         } catch (const CycleOverflow& e) {
           throw e.inside(fmt::format("{}'s corner tracing", cell_name(id_)));
         }
-        wire_.timeline.span(track_, frame_name("trace corners", f), "compute", begin, wire_.kernel.now());
+        wire_.timeline.span(track_, frame_name("trace corners", f), SpanCategory::Compute, begin, wire_.kernel.now());
       }
       record_.trace_corners += wire_.kernel.now() - started;
 
@@ -106,7 +106,7 @@ Process Cell::run() {
           co_await wire_.links.send(id_, m.to, m.corners.size() * kScreenSampleBytes,
                                     std::string(exchange_label(step)), exchange_payload(step, i));
           record_.comm += wire_.kernel.now() - begin;
-          wire_.timeline.span(track_, fmt::format("send corners to {}", cell_name(m.to)), "message", begin,
+          wire_.timeline.span(track_, fmt::format("send corners to {}", cell_name(m.to)), SpanCategory::Message, begin,
                               wire_.kernel.now(), m.corners.size() * kScreenSampleBytes);
         }
         const Cycles waiting = wire_.kernel.now();
@@ -126,7 +126,7 @@ Process Cell::run() {
           ++received;
         }
         if (wire_.kernel.now() > waiting)
-          wire_.timeline.span(track_, "wait for corners", "wait", waiting, wire_.kernel.now());
+          wire_.timeline.span(track_, "wait for corners", SpanCategory::Wait, waiting, wire_.kernel.now());
       }
       check_has_every_corner(exchange);
       record_.corners_received += unit_received_.size();
@@ -151,7 +151,7 @@ Process Cell::run() {
         wire_.timeline.span(
             track_,
             frame_name(fmt::format("subdivide {} pixels", wire_.frames[f].layout.window(id_).pixel_count()), f),
-            "compute", begin, wire_.kernel.now());
+            SpanCategory::Compute, begin, wire_.kernel.now());
       }
       record_.subdivide += wire_.kernel.now() - subdivide_start;
     }
@@ -167,8 +167,8 @@ Process Cell::run() {
     const BusTransfer done =
         co_await wire_.bus.transfer(id_, kHost, kDoneMessageBytes, std::string(kDoneMessage));
     if (done.granted > done.requested)
-      wire_.timeline.span(track_, "wait for bus", "wait", done.requested, done.granted);
-    wire_.timeline.span(track_, "send done", "message", done.granted, done.delivered, done.bytes);
+      wire_.timeline.span(track_, "wait for bus", SpanCategory::Wait, done.requested, done.granted);
+    wire_.timeline.span(track_, "send done", SpanCategory::Message, done.granted, done.delivered, done.bytes);
     record_.comm += done.delivered - done.requested;
     record_.finish = done.delivered;
     record_.unit_finish.push_back(done.delivered);
@@ -214,7 +214,7 @@ void Cell::take_in(const BusTransfer& t, std::string_view expected) {
     throw std::logic_error(fmt::format("cell {} expected \"{}\" from the host, got \"{}\"", id_,
                                        expected, t.label));
   record_.comm += t.delivered - t.granted;
-  wire_.timeline.span(track_, fmt::format("receive {}", t.label), "receive", t.granted, t.delivered,
+  wire_.timeline.span(track_, fmt::format("receive {}", t.label), SpanCategory::Receive, t.granted, t.delivered,
                       t.bytes);
 }
 

@@ -32,7 +32,7 @@ Process Host::run() {
     for (int f = first; f < end; ++f) {
       const Cycles start = wire_.kernel.now();
       co_await wire_.kernel.delay(wire_.frames[f].voxel_generation);
-      wire_.timeline.span(track_, frame_name("voxel generation", f), "compute", start, wire_.kernel.now());
+      wire_.timeline.span(track_, frame_name("voxel generation", f), SpanCategory::Compute, start, wire_.kernel.now());
     }
 
     // Broadcast the program (once), each frame's scene and voxel data, then the
@@ -46,7 +46,7 @@ Process Host::run() {
     broadcasts.emplace_back(kStartCommand, kStartCommandBytes);
     for (const auto& [label, bytes] : broadcasts) {
       const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes, std::string(label));
-      wire_.timeline.span(track_, fmt::format("broadcast {}", label), "broadcast", t.granted, t.delivered,
+      wire_.timeline.span(track_, fmt::format("broadcast {}", label), SpanCategory::Broadcast, t.granted, t.delivered,
                           t.bytes);
     }
 
@@ -58,7 +58,7 @@ Process Host::run() {
         throw std::logic_error(fmt::format("host expected \"done\", got \"{}\"", t.label));
     }
     unit_end_.push_back(wire_.kernel.now());
-    wire_.timeline.span(track_, "wait for cells", "wait", collecting, wire_.kernel.now());
+    wire_.timeline.span(track_, "wait for cells", SpanCategory::Wait, collecting, wire_.kernel.now());
     if (wire_.unit_ends) wire_.unit_ends(u);
   }
 }

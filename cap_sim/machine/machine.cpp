@@ -255,7 +255,7 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
 
   for (const BusTransfer& t : bus.log()) {
     timeline.span(bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, grid)),
-                  t.receiver == kAllCells ? "broadcast" : "message", t.granted, t.released, t.bytes);
+                  t.receiver == kAllCells ? SpanCategory::Broadcast : SpanCategory::Message, t.granted, t.released, t.bytes);
     ++result.bus.transfers;
     result.bus.bytes += t.bytes;
     result.bus.busy += t.released - t.granted;
@@ -269,7 +269,7 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   }
   for (const LinkHop& h : links.hops())
     timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)], h.label,
-                  "link", h.begin, h.end, h.bytes);
+                  SpanCategory::Link, h.begin, h.end, h.bytes);
   result.links = links.traffic();
   result.link_messages = links.log();
 
