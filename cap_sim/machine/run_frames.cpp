@@ -115,59 +115,88 @@ std::uint64_t unit_video_memory(const std::vector<FrameWork>& frames, const Dist
   return most;
 }
 
-}  // namespace
-
-SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& config) {
-  const CostProfile& profile = config.profile;
-  const CellGrid grid = config.cells;
+// A run's preconditions that the parts cannot check themselves: frame
+// averaging in dot mode, at least one frame, every frame's data within a
+// cell's memory.
+void check_frames(const std::vector<FrameWork>& frames, const MachineConfig& config) {
   if (config.frame_average && config.mode != PixelMode::Dot)
     throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
   if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
-  SimulationResult result;
-  result.config = config;
-  result.footprint = frames[0].footprint;
-  for (const FrameWork& f : frames) check_cell_memory(f.footprint, profile);
+  for (const FrameWork& f : frames) check_cell_memory(f.footprint, config.profile);
+}
 
-  CostBreakdown voxel_generation;
+// The host's voxel generation over all frames, by process, and its operations
+// added to `counts`; refused before the run if it does not fit.
+CostBreakdown host_voxel_generation(const std::vector<FrameWork>& frames, VoxelGenCounts& counts) {
+  CostBreakdown work;
   try {
     for (const FrameWork& f : frames) {
-      voxel_generation[CostCategory::VoxelGeneration] += f.voxel_generation;
-      result.voxel_counts += f.voxel_counts;
+      work[CostCategory::VoxelGeneration] += f.voxel_generation;
+      counts += f.voxel_counts;
     }
   } catch (const CycleOverflow& e) {
     throw e.inside("the host's voxel generation, all frames");
   }
-  std::vector<DistributionUnit> units = distribution_units(frames, config);
+  return work;
+}
 
+// The machine's parts wired for one run: host, command bus, neighbour links
+// and the cells on one event kernel, with their timeline tracks in display
+// order (host, command bus, each cell; the links' follow once the run has
+// shown which carried anything). Antialiased, each unit's corner exchange is
+// planned as the host starts the unit and dropped once it has collected it.
+// The parts refer to each other and to frames and units, which must outlive
+// them.
+struct MachineParts {
+  MachineParts(std::vector<FrameWork>& frames, std::vector<DistributionUnit>& units, const MachineConfig& config,
+               Timeline& timeline);
+  MachineParts(const MachineParts&) = delete;
+  MachineParts& operator=(const MachineParts&) = delete;
+
+  // Runs the host's and the cells' programs to their end. Throws
+  // std::logic_error if one waits for a message that never comes.
+  void run();
+
+  std::vector<FrameWork>& frames;
+  std::vector<DistributionUnit>& units;
+  const CellGrid grid;
+  const bool antialiased;
+  Timeline& timeline;
   EventKernel kernel;
-  CommandBus bus(kernel, profile);
-  NeighbourLinks links(kernel, grid, profile);
-  Timeline& timeline = result.timeline;
-  const int host_track = timeline.add_track("host");
-  const int bus_track = timeline.add_track("command bus");
-
-  const bool antialiased = config.aa.depth > 0;
-  auto unit_begins = [&](std::size_t u) {
-    if (antialiased) units[u].exchange = plan_exchange(frames, units[u]);
-  };
-  auto unit_ends = [&](std::size_t u) {
-    if (!antialiased) return;
-    for (CellId c = 0; c < grid.cell_count(); ++c) units[u].corners_needed.push_back(units[u].exchange->needs(c).size());
-    units[u].exchange.reset();
-  };
-  Host host({kernel, bus, timeline, frames, units, unit_begins, unit_ends}, host_track, grid.cell_count(),
-            profile.program_bytes);
+  CommandBus bus;
+  NeighbourLinks links;
+  const int host_track, bus_track;
+  Host host;
   std::vector<std::unique_ptr<Cell>> cells;
+
+ private:
+  void unit_begins(std::size_t u);
+  void unit_ends(std::size_t u);
+};
+
+MachineParts::MachineParts(std::vector<FrameWork>& frames_in, std::vector<DistributionUnit>& units_in,
+                           const MachineConfig& config, Timeline& timeline_in)
+    : frames(frames_in),
+      units(units_in),
+      grid(config.cells),
+      antialiased(config.aa.depth > 0),
+      timeline(timeline_in),
+      bus(kernel, config.profile),
+      links(kernel, grid, config.profile),
+      host_track(timeline.add_track("host")),
+      bus_track(timeline.add_track("command bus")),
+      host({kernel, bus, timeline, frames, units, [this](std::size_t u) { unit_begins(u); },
+            [this](std::size_t u) { unit_ends(u); }},
+           host_track, grid.cell_count(), config.profile.program_bytes) {
   cells.reserve(grid.cell_count());
   for (CellId id = 0; id < grid.cell_count(); ++id) {
     const CellPosition p = grid.position(id);
     const int track = timeline.add_track(fmt::format("cell[{},{}]", p.row, p.col));
     cells.push_back(std::make_unique<Cell>(
-        id, track, Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased,
-                                        config.keep_received_corners}));
+        id, track,
+        Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased, config.keep_received_corners}));
   }
-
-  bus.on_delivery([&](const BusTransfer& t) {
+  bus.on_delivery([this](const BusTransfer& t) {
     if (t.receiver == kAllCells) {
       for (auto& cell : cells) cell->bus_inbox().deliver(t);
     } else if (t.receiver == kHost) {
@@ -176,76 +205,132 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
       cells.at(t.receiver)->bus_inbox().deliver(t);
     }
   });
-  links.on_delivery([&](const LinkMessage& m) { cells.at(m.to)->link_inbox().deliver(m); });
+  links.on_delivery([this](const LinkMessage& m) { cells.at(m.to)->link_inbox().deliver(m); });
+}
 
+void MachineParts::unit_begins(std::size_t u) {
+  if (antialiased) units[u].exchange = plan_exchange(frames, units[u]);
+}
+
+void MachineParts::unit_ends(std::size_t u) {
+  if (!antialiased) return;
+  for (CellId c = 0; c < grid.cell_count(); ++c) units[u].corners_needed.push_back(units[u].exchange->needs(c).size());
+  units[u].exchange.reset();
+}
+
+void MachineParts::run() {
   kernel.spawn(host.run());
   for (auto& cell : cells) kernel.spawn(cell->run());
   kernel.run();
   if (!kernel.all_processes_finished())
     throw std::logic_error("the simulated run deadlocked: a process waits for a message that never came");
+}
 
-  for (const BusTransfer& t : bus.log()) {
-    timeline.span(bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, grid)),
-                  t.receiver == kAllCells ? SpanCategory::Broadcast : SpanCategory::Message, t.granted, t.released, t.bytes);
+// The bus's transfers on its track, and its totals; then one track per link
+// direction that carried anything, after the cells', with every hop on it.
+void record_traffic(MachineParts& m, SimulationResult& result) {
+  for (const BusTransfer& t : m.bus.log()) {
+    m.timeline.span(m.bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, m.grid)),
+                    t.receiver == kAllCells ? SpanCategory::Broadcast : SpanCategory::Message, t.granted,
+                    t.released, t.bytes);
     ++result.bus.transfers;
     result.bus.bytes += t.bytes;
     result.bus.busy += t.released - t.granted;
   }
-  // One track per link direction that carried anything, after the cells'.
-  std::vector<int> link_tracks(static_cast<std::size_t>(grid.cell_count()) * 4, -1);
-  for (const LinkTraffic& t : links.traffic()) {
-    const CellPosition p = grid.position(t.cell);
+  std::vector<int> link_tracks(static_cast<std::size_t>(m.grid.cell_count()) * 4, -1);
+  for (const LinkTraffic& t : m.links.traffic()) {
+    const CellPosition p = m.grid.position(t.cell);
     link_tracks[static_cast<std::size_t>(t.cell) * 4 + static_cast<int>(t.direction)] =
-        timeline.add_track(fmt::format("link cell[{},{}] {}", p.row, p.col, to_string(t.direction)));
+        m.timeline.add_track(fmt::format("link cell[{},{}] {}", p.row, p.col, to_string(t.direction)));
   }
-  for (const LinkHop& h : links.hops())
-    timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)], h.label,
-                  SpanCategory::Link, h.begin, h.end, h.bytes);
-  result.links = links.traffic();
-  result.link_messages = links.log();
+  for (const LinkHop& h : m.links.hops())
+    m.timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)], h.label,
+                    SpanCategory::Link, h.begin, h.end, h.bytes);
+  result.links = m.links.traffic();
+  result.link_messages = m.links.log();
+  result.events = m.kernel.events_run();
+}
 
-  result.events = kernel.events_run();
-  result.frame = host.unit_end().back();
-  for (std::size_t u = 0; u < units.size(); ++u)
-    result.units.push_back({units[u].first_frame, units[u].frames, host.unit_start()[u], host.unit_end()[u],
-                            unit_video_memory(frames, units[u], cells)});
-  result.breakdown = voxel_generation;
-  for (const auto& cell : cells) {
-    const CellRecord& r = cell->record();
-    CellReport c;
-    c.id = cell->id();
-    c.position = grid.position(c.id);
-    c.pixels = r.pixels;
-    c.rays = r.rays;
-    c.ops = r.ops;
-    c.busy = r.busy;
-    c.comm = r.comm;
-    c.finish = r.finish;
-    c.idle = r.finish - r.busy - r.comm;
-    c.work = r.work;
-    c.trace_corners = r.trace_corners;
-    c.exchange = r.exchange;
-    c.subdivide = r.subdivide;
-    c.corners_received = r.corners_received;
-    c.received_corners = r.received_corners;
-    c.frame_busy = r.frame_busy;
-    c.unit_finish = r.unit_finish;
+// When the host started and collected each unit; the last collection is the
+// run's time.
+void record_units(const MachineParts& m, SimulationResult& result) {
+  result.frame = m.host.unit_end().back();
+  for (std::size_t u = 0; u < m.units.size(); ++u)
+    result.units.push_back({m.units[u].first_frame, m.units[u].frames, m.host.unit_start()[u], m.host.unit_end()[u],
+                            unit_video_memory(m.frames, m.units[u], m.cells)});
+}
+
+// What a cell measured, as the report gives it.
+CellReport cell_report(const Cell& cell, const CellGrid& grid) {
+  const CellRecord& r = cell.record();
+  CellReport c;
+  c.id = cell.id();
+  c.position = grid.position(c.id);
+  c.pixels = r.pixels;
+  c.rays = r.rays;
+  c.ops = r.ops;
+  c.busy = r.busy;
+  c.comm = r.comm;
+  c.finish = r.finish;
+  c.idle = r.finish - r.busy - r.comm;
+  c.work = r.work;
+  c.trace_corners = r.trace_corners;
+  c.exchange = r.exchange;
+  c.subdivide = r.subdivide;
+  c.corners_received = r.corners_received;
+  c.received_corners = r.received_corners;
+  c.frame_busy = r.frame_busy;
+  c.unit_finish = r.unit_finish;
+  return c;
+}
+
+// Every cell's report, and the run's time by process: the host's voxel
+// generation and every cell's work, refused here if it does not fit, before
+// any report prints it.
+void record_cells(const MachineParts& m, const CostBreakdown& host_work, SimulationResult& result) {
+  result.breakdown = host_work;
+  for (const auto& cell : m.cells) {
+    result.cells.push_back(cell_report(*cell, m.grid));
     try {
-      result.breakdown += r.work;
+      result.breakdown += cell->record().work;
     } catch (const CycleOverflow& e) {
       throw e.inside("all cells' work and the host's voxel generation, by process");
     }
-    result.cells.push_back(std::move(c));
   }
   try {
-    (void)result.breakdown.total();  // the reports print it: refuse now, before any output
+    (void)result.breakdown.total();
   } catch (const CycleOverflow& e) {
     throw e.inside("all cells' work and the host's voxel generation, in total");
   }
-  result.width = frames[0].layout.width();
-  result.height = frames[0].layout.height();
-  for (std::size_t f = 0; f < frames.size(); ++f)
-    result.screens.push_back(compose_frame(frames[f].layout, cells, static_cast<int>(f), config));
+}
+
+// Every frame as the video bus showed it.
+void compose_screens(const MachineParts& m, const MachineConfig& config, SimulationResult& result) {
+  result.width = m.frames[0].layout.width();
+  result.height = m.frames[0].layout.height();
+  for (std::size_t f = 0; f < m.frames.size(); ++f)
+    result.screens.push_back(compose_frame(m.frames[f].layout, m.cells, static_cast<int>(f), config));
+}
+
+}  // namespace
+
+// Plan the units, wire the parts, run their programs, collect what they
+// recorded.
+SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& config) {
+  check_frames(frames, config);
+  SimulationResult result;
+  result.config = config;
+  result.footprint = frames[0].footprint;
+  const CostBreakdown host_work = host_voxel_generation(frames, result.voxel_counts);
+  std::vector<DistributionUnit> units = distribution_units(frames, config);
+
+  MachineParts machine(frames, units, config, result.timeline);
+  machine.run();
+
+  record_traffic(machine, result);
+  record_units(machine, result);
+  record_cells(machine, host_work, result);
+  compose_screens(machine, config, result);
   return result;
 }
 
