@@ -40,10 +40,11 @@ Process Cell::run() {
 // the host broadcasts for the unit's frames, then waits for its start command.
 Task<> Cell::receive(std::size_t unit) {
   Cycles waiting_since = clock_.now();
-  for (const std::string_view expected : unit_broadcasts(unit == 0, wire_.units[unit].frames)) {
+  const DistributionUnit& u = wire_.units[unit];
+  for (const Broadcast expected : unit_broadcasts(unit == 0, u.first_frame, u.frames)) {
     const BusTransfer t = co_await bus_inbox_.receive();
     clock_.wait("wait for host", waiting_since, t.granted);
-    take_in(t, expected);
+    take_in(t, expected.message);
     waiting_since = clock_.now();
   }
 }
@@ -101,30 +102,13 @@ Task<> Cell::subdivide(const DistributionUnit& unit) {
 // Tell the host this cell is done with the unit: every pixel of its frames is
 // in video memory.
 Task<> Cell::report_done() {
-  const BusTransfer done = co_await wire_.bus.transfer(id_, kHost, kDoneMessageBytes, std::string(kDoneMessage));
+  const BusTransfer done = co_await wire_.bus.transfer(id_, kHost, kDoneMessageBytes, BusMessage::Done);
   clock_.wait("wait for bus", done.requested, done.granted);
   clock_.span("send done", SpanCategory::Message, done.granted, done.delivered, done.bytes);
   record_.comm += done.delivered - done.requested;
   record_.finish = done.delivered;
   record_.unit_finish.push_back(done.delivered);
 }
-
-namespace {
-
-const char* exchange_label(ExchangeStep step) {
-  return step == ExchangeStep::Vertical ? "corners (vertical step)" : "corners (horizontal step)";
-}
-
-// A link message's payload names the step and the message's place among its
-// sender's sends of that step.
-std::uint64_t exchange_payload(ExchangeStep step, std::size_t index) {
-  return index * 2 + (step == ExchangeStep::Horizontal ? 1 : 0);
-}
-ExchangeStep payload_step(std::uint64_t payload) {
-  return payload % 2 ? ExchangeStep::Horizontal : ExchangeStep::Vertical;
-}
-
-}  // namespace
 
 // A step's messages, in order; the sender continues as each has left it. What
 // the horizontal step relays must have come in the vertical one.
@@ -135,7 +119,7 @@ Task<> Cell::send_corners(const CornerExchange& exchange, ExchangeStep step) {
     if (step == ExchangeStep::Horizontal) check_holds(m, exchange);
     const std::uint64_t bytes = m.corners.size() * kScreenSampleBytes;
     const Cycles begin = clock_.now();
-    co_await wire_.links.send(id_, m.to, bytes, std::string(exchange_label(step)), exchange_payload(step, i));
+    co_await wire_.links.send(id_, m.to, bytes, CornerPacket{step, i});
     record_.comm += clock_.now() - begin;
     clock_.span(fmt::format("send corners to {}", cell_name(m.to)), SpanCategory::Message, begin, clock_.now(),
                 bytes);
@@ -154,7 +138,7 @@ Task<> Cell::receive_corners(const CornerExchange& exchange, ExchangeStep step) 
   }
   while (received < exchange.receives(id_, step)) {
     LinkMessage m = co_await link_inbox_.receive();
-    if (payload_step(m.payload) != step) {
+    if (m.packet.step != step) {
       early_.push_back(std::move(m));
       continue;
     }
@@ -195,8 +179,7 @@ std::string Cell::cell_name(CellId id) const {
 }
 
 void Cell::take_in(const LinkMessage& m, const CornerExchange& exchange) {
-  const ExchangeStep step = payload_step(m.payload);
-  const CornerMessage& sent = exchange.sends(m.from, step).at(m.payload / 2);
+  const CornerMessage& sent = exchange.sends(m.from, m.packet.step).at(m.packet.index);
   if (sent.to != id_)
     throw std::logic_error(fmt::format("{} took in corners sent to {}", cell_name(id_), cell_name(sent.to)));
   unit_received_.insert(unit_received_.end(), sent.corners.begin(), sent.corners.end());
@@ -219,12 +202,13 @@ void Cell::check_has_every_corner(const CornerExchange& exchange) {
     throw std::logic_error(fmt::format("{} lacks corners it needs after the exchange", cell_name(id_)));
 }
 
-void Cell::take_in(const BusTransfer& t, std::string_view expected) {
-  if (t.label != expected)
+void Cell::take_in(const BusTransfer& t, BusMessage expected) {
+  if (t.message != expected)
     throw std::logic_error(fmt::format("cell {} expected \"{}\" from the host, got \"{}\"", id_,
-                                       expected, t.label));
+                                       to_string(expected), to_string(t.message)));
   record_.comm += t.delivered - t.granted;
-  clock_.span(fmt::format("receive {}", t.label), SpanCategory::Receive, t.granted, t.delivered, t.bytes);
+  clock_.span(fmt::format("receive {}", to_string(t.message)), SpanCategory::Receive, t.granted, t.delivered,
+              t.bytes);
 }
 
 }  // namespace capsim::sim

@@ -87,7 +87,8 @@ class Cell {
   Task<> send_corners(const CornerExchange& exchange, ExchangeStep step);
   Task<> receive_corners(const CornerExchange& exchange, ExchangeStep step);
 
-  void take_in(const BusTransfer& t, std::string_view expected);
+  // A broadcast taken in; throws std::logic_error if it is not the one expected.
+  void take_in(const BusTransfer& t, BusMessage expected);
   // The antialiasing exchange's bookkeeping: a message's corners taken in; a
   // message to relay holds only corners this cell has; every corner its pixels
   // need has come (each throws std::logic_error if not).

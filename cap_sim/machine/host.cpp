@@ -42,16 +42,10 @@ Task<> Host::generate_voxels(const DistributionUnit& unit) {
 // cell.
 Task<> Host::broadcast(std::size_t u) {
   const DistributionUnit& unit = wire_.units[u];
-  std::vector<std::pair<std::string_view, std::uint64_t>> broadcasts;
-  if (u == 0) broadcasts.emplace_back(kProgramBroadcast, program_bytes_);
-  for (const int f : unit.frame_numbers()) {
-    broadcasts.emplace_back(kSceneBroadcast, wire_.frames[f].footprint.scene_bytes());
-    broadcasts.emplace_back(kVoxelBroadcast, wire_.frames[f].footprint.voxel_bytes());
-  }
-  broadcasts.emplace_back(kStartCommand, kStartCommandBytes);
-  for (const auto& [label, bytes] : broadcasts) {
-    const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes, std::string(label));
-    clock_.span(fmt::format("broadcast {}", label), SpanCategory::Broadcast, t.granted, t.delivered, t.bytes);
+  for (const Broadcast b : unit_broadcasts(u == 0, unit.first_frame, unit.frames)) {
+    const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes_of(b), b.message);
+    clock_.span(fmt::format("broadcast {}", to_string(b.message)), SpanCategory::Broadcast, t.granted, t.delivered,
+                t.bytes);
   }
 }
 
@@ -60,11 +54,22 @@ Task<> Host::collect_done() {
   const Cycles collecting = clock_.now();
   for (int received = 0; received < cell_count_; ++received) {
     const BusTransfer t = co_await bus_inbox_.receive();
-    if (t.label != kDoneMessage)
-      throw std::logic_error(fmt::format("host expected \"done\", got \"{}\"", t.label));
+    if (t.message != BusMessage::Done)
+      throw std::logic_error(fmt::format("host expected \"done\", got \"{}\"", to_string(t.message)));
   }
   unit_end_.push_back(clock_.now());
   clock_.span("wait for cells", SpanCategory::Wait, collecting, clock_.now());
+}
+
+std::uint64_t Host::bytes_of(const Broadcast& b) const {
+  switch (b.message) {
+    case BusMessage::Program: return program_bytes_;
+    case BusMessage::Scene: return wire_.frames[b.frame].footprint.scene_bytes();
+    case BusMessage::VoxelData: return wire_.frames[b.frame].footprint.voxel_bytes();
+    case BusMessage::Start: return kStartCommandBytes;
+    case BusMessage::Done: break;
+  }
+  throw std::logic_error(fmt::format("the host does not broadcast \"{}\"", to_string(b.message)));
 }
 
 }  // namespace capsim::sim

@@ -12,6 +12,7 @@
 #include "kernel/timeline.h"
 #include "machine/command_bus.h"
 #include "machine/cost_profile.h"
+#include "machine/frame_protocol.h"
 #include "machine/frame_work.h"
 #include "machine/program_clock.h"
 
@@ -55,6 +56,9 @@ class Host {
   Task<> generate_voxels(const DistributionUnit& unit);
   Task<> broadcast(std::size_t unit);
   Task<> collect_done();
+  // The bytes of a broadcast: the program, a frame's scene or voxel data
+  // (its footprint), the start command.
+  std::uint64_t bytes_of(const Broadcast& b) const;
 
   Wiring wire_;
   int cell_count_;

@@ -230,7 +230,7 @@ void MachineParts::run() {
 // direction that carried anything, after the cells', with every hop on it.
 void record_traffic(MachineParts& m, SimulationResult& result) {
   for (const BusTransfer& t : m.bus.log()) {
-    m.timeline.span(m.bus_track, fmt::format("{} ({})", t.label, sender_name(t.sender, m.grid)),
+    m.timeline.span(m.bus_track, fmt::format("{} ({})", to_string(t.message), sender_name(t.sender, m.grid)),
                     t.receiver == kAllCells ? SpanCategory::Broadcast : SpanCategory::Message, t.granted,
                     t.released, t.bytes);
     ++result.bus.transfers;
@@ -244,7 +244,8 @@ void record_traffic(MachineParts& m, SimulationResult& result) {
         m.timeline.add_track(fmt::format("link cell[{},{}] {}", p.row, p.col, to_string(t.direction)));
   }
   for (const LinkHop& h : m.links.hops())
-    m.timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)], h.label,
+    m.timeline.span(link_tracks[static_cast<std::size_t>(h.cell) * 4 + static_cast<int>(h.direction)],
+                    std::string(to_string(h.packet)),
                     SpanCategory::Link, h.begin, h.end, h.bytes);
   result.links = m.links.traffic();
   result.link_messages = m.links.log();
