@@ -16,6 +16,7 @@ namespace capsim::sim {
 // the HTML page colours spans by that name alone.
 enum class SpanCategory : std::uint8_t {
   Compute,    // a program's own work: tracing, voxel generation
+  Subdivide,  // a cell's antialiasing phase 3, apart from its corner tracing just before
   Broadcast,  // a transfer to every cell over the command bus
   Receive,    // a cell taking in a broadcast
   Message,    // a transfer to one receiver, over the bus or the links
@@ -30,9 +31,10 @@ struct SpanCategoryName {
   std::string_view name;
 };
 inline constexpr SpanCategoryName kSpanCategories[] = {
-    {SpanCategory::Compute, "compute"}, {SpanCategory::Broadcast, "broadcast"},
-    {SpanCategory::Receive, "receive"}, {SpanCategory::Message, "message"},
-    {SpanCategory::Wait, "wait"},       {SpanCategory::Link, "link"},
+    {SpanCategory::Compute, "compute"}, {SpanCategory::Subdivide, "subdivide"},
+    {SpanCategory::Broadcast, "broadcast"}, {SpanCategory::Receive, "receive"},
+    {SpanCategory::Message, "message"}, {SpanCategory::Wait, "wait"},
+    {SpanCategory::Link, "link"},
 };
 
 constexpr std::string_view to_string(SpanCategory c) { return kSpanCategories[static_cast<std::size_t>(c)].name; }

@@ -93,7 +93,8 @@ Task<> Cell::subdivide(const DistributionUnit& unit) {
   const Cycles start = clock_.now();
   for (const int f : unit.frame_numbers()) {
     record_.frame_write_start[f] = clock_.now();
-    co_await clock_.compute(video_[f].subdivision_work.total(), pixels_name("subdivide", f), "subdivision");
+    co_await clock_.compute(video_[f].subdivision_work.total(), pixels_name("subdivide", f), "subdivision",
+                            SpanCategory::Subdivide);
     count_frame(f);
   }
   record_.subdivide += clock_.now() - start;
