@@ -38,10 +38,10 @@ Process Cell::run() {
 
 // Every cell holds the same program and the same data (§3.3): it takes in what
 // the host broadcasts for the unit's frames, then waits for its start command.
-Task<> Cell::receive(std::size_t unit) {
+Task<> Cell::receive(std::size_t u) {
+  const DistributionUnit& unit = wire_.units[u];
   Cycles waiting_since = clock_.now();
-  const DistributionUnit& u = wire_.units[unit];
-  for (const Broadcast expected : unit_broadcasts(unit == 0, u.first_frame, u.frames)) {
+  for (const Broadcast expected : unit_broadcasts(u == 0, unit.first_frame, unit.frames)) {
     const BusTransfer t = co_await bus_inbox_.receive();
     clock_.wait("wait for host", waiting_since, t.granted);
     take_in(t, expected.message);

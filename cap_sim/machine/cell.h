@@ -63,8 +63,10 @@ class Cell {
   Cell(CellId id, int timeline_track, const Wiring& wiring);
 
   // The program every cell runs (§3.3), for each distribution unit of the run
-  // in turn. Precondition: the host broadcasts what unit_broadcasts() lists
-  // and collects a "done" from every cell, unit after unit.
+  // in turn: receive, trace, report done; antialiased: receive, trace
+  // corners, exchange corners, subdivide, report done. Precondition: the host
+  // broadcasts what unit_broadcasts() lists and collects a "done" from every
+  // cell before the next unit's broadcasts.
   Process run();
 
   Mailbox<BusTransfer>& bus_inbox() { return bus_inbox_; }
@@ -76,8 +78,9 @@ class Cell {
   const TracedCell& video_memory(int frame) const { return video_[frame]; }
 
  private:
-  // The phases of run(), each for one distribution unit.
-  Task<> receive(std::size_t unit);
+  // The phases of run(), each for one distribution unit (receive: by its
+  // index, the first unit's broadcasts beginning with the program).
+  Task<> receive(std::size_t u);
   Task<> trace(const DistributionUnit& unit);
   Task<> trace_corners(const DistributionUnit& unit);
   Task<> exchange_corners(const CornerExchange& exchange);
