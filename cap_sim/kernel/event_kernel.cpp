@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace capsim::sim {
 
@@ -38,16 +39,13 @@ void EventKernel::schedule(Cycles at, EventPriority priority, Action action) {
 
 void EventKernel::spawn(Process process) {
   const ProcessHandle h = process.handle();
+  h.promise().escaped = &escaped_;
   processes_.push_back(std::move(process));
   resume_at(now_, h);
 }
 
-void EventKernel::resume_at(Cycles at, ProcessHandle process) {
-  schedule(at, EventPriority::Resume, [process] {
-    process.resume();
-    if (process.done() && process.promise().failure)
-      std::rethrow_exception(process.promise().failure);
-  });
+void EventKernel::resume_at(Cycles at, std::coroutine_handle<> process) {
+  schedule(at, EventPriority::Resume, [process] { process.resume(); });
 }
 
 void EventKernel::run() {
@@ -58,6 +56,7 @@ void EventKernel::run() {
     now_ = event.at;
     ++events_run_;
     event.action();
+    if (escaped_) std::rethrow_exception(std::exchange(escaped_, nullptr));
   }
 }
 

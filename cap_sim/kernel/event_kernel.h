@@ -13,7 +13,9 @@
 #include "kernel/cycles.h"
 #include "kernel/process.h"
 
+#include <coroutine>
 #include <cstdint>
+#include <exception>
 #include <functional>
 #include <string>
 #include <vector>
@@ -51,8 +53,9 @@ class EventKernel {
   // (priority Resume).
   void spawn(Process process);
 
-  // Resumes a suspended process at the given cycle (priority Resume).
-  void resume_at(Cycles at, ProcessHandle process);
+  // Resumes a suspended process, or the task it waits in, at the given cycle
+  // (priority Resume).
+  void resume_at(Cycles at, std::coroutine_handle<> process);
 
   // Runs events in order until none is left. Rethrows the first exception a
   // process body lets escape.
@@ -68,7 +71,7 @@ class EventKernel {
     EventKernel& kernel;
     Cycles duration;
     bool await_ready() const noexcept { return false; }
-    void await_suspend(ProcessHandle h) const { kernel.resume_at(kernel.after(duration), h); }
+    void await_suspend(std::coroutine_handle<> h) const { kernel.resume_at(kernel.after(duration), h); }
     void await_resume() const noexcept {}
   };
   DelayAwaiter delay(Cycles duration) { return {*this, duration}; }
@@ -88,6 +91,7 @@ class EventKernel {
   std::uint64_t events_run_ = 0;
   std::vector<Event> queue_;  // a binary heap under runs_later
   std::vector<Process> processes_;
+  std::exception_ptr escaped_;  // what a process body let escape (Process::promise_type::escaped)
 };
 
 }  // namespace capsim::sim

@@ -30,7 +30,7 @@ class Mailbox {
   struct ReceiveAwaiter {
     Mailbox& box;
     bool await_ready() const noexcept { return !box.messages_.empty(); }
-    void await_suspend(ProcessHandle h) {
+    void await_suspend(std::coroutine_handle<> h) {
       if (box.waiter_) throw std::logic_error("two processes receive from one mailbox");
       box.waiter_ = h;
     }
@@ -45,7 +45,7 @@ class Mailbox {
  private:
   EventKernel* kernel_;
   std::deque<Message> messages_;
-  ProcessHandle waiter_{};
+  std::coroutine_handle<> waiter_{};
 };
 
 }  // namespace capsim::sim

@@ -7,9 +7,9 @@ int Timeline::add_track(std::string name) {
   return static_cast<int>(tracks_.size()) - 1;
 }
 
-void Timeline::span(int track, std::string name, std::string category, Cycles begin, Cycles end,
+void Timeline::span(int track, std::string name, SpanCategory category, Cycles begin, Cycles end,
                     std::uint64_t bytes) {
-  spans_.push_back(TimelineSpan{track, std::move(name), std::move(category), begin, end, bytes});
+  spans_.push_back(TimelineSpan{track, std::move(name), category, begin, end, bytes});
 }
 
 }  // namespace capsim::sim

@@ -11,8 +11,8 @@ namespace capsim::sim {
 
 Cell::Cell(CellId id, int timeline_track, const Wiring& wiring)
     : id_(id),
-      track_(timeline_track),
       wire_(wiring),
+      clock_(wiring.kernel, wiring.timeline, timeline_track, cell_name(id), record_.busy),
       bus_inbox_(wiring.kernel),
       link_inbox_(wiring.kernel) {
   video_.reserve(wiring.frames.size());
@@ -21,162 +21,157 @@ Cell::Cell(CellId id, int timeline_track, const Wiring& wiring)
   record_.frame_write_start.resize(wiring.frames.size());
 }
 
-namespace {
-
-const char* exchange_label(ExchangeStep step) {
-  return step == ExchangeStep::Vertical ? "corners (vertical step)" : "corners (horizontal step)";
-}
-
-// A link message's payload names the step and the message's place among its
-// sender's sends of that step.
-std::uint64_t exchange_payload(ExchangeStep step, std::size_t index) {
-  return index * 2 + (step == ExchangeStep::Horizontal ? 1 : 0);
-}
-ExchangeStep payload_step(std::uint64_t payload) {
-  return payload % 2 ? ExchangeStep::Horizontal : ExchangeStep::Vertical;
-}
-
-}  // namespace
-
 Process Cell::run() {
   for (std::size_t u = 0; u < wire_.units.size(); ++u) {
     const DistributionUnit& unit = wire_.units[u];
-    const int first = unit.first_frame, end = unit.first_frame + unit.frames;
-
-    // Every cell holds the same program and the same data (§3.3): take in what
-    // the host broadcasts for the unit's frames, then wait for its start command.
-    Cycles waiting_since = wire_.kernel.now();
-    for (const std::string_view expected : unit_broadcasts(u == 0, unit.frames)) {
-      const BusTransfer t = co_await bus_inbox_.receive();
-      if (t.granted > waiting_since)
-        wire_.timeline.span(track_, "wait for host", "wait", waiting_since, t.granted);
-      take_in(t, expected);
-      waiting_since = wire_.kernel.now();
-    }
-    const Cycles started = wire_.kernel.now();
-
+    co_await receive(u);
     if (!wire_.antialiased) {
-      // Trace the pixels this cell's window controller shows, frame after frame,
-      // in order, into video memory: the clock advances by the cycles of every
-      // pixel's operations. The host threads traced them ahead; nothing reaches
-      // a cell while it traces, so its clock advances once per frame by their sum
-      // (the same time as pixel by pixel, without an event per pixel).
-      for (int f = first; f < end; ++f) {
-        const Cycles begin = wire_.kernel.now();
-        record_.frame_write_start[f] = begin;
-        try {
-          co_await wire_.kernel.delay(video_[f].work.total());
-        } catch (const CycleOverflow& e) {
-          throw e.inside(fmt::format("{}'s tracing", cell_name(id_)));
-        }
-        record_.frame_busy[f] = video_[f].work.total();
-        wire_.timeline.span(
-            track_, frame_name(fmt::format("trace {} pixels", wire_.frames[f].layout.window(id_).pixel_count()), f),
-            "compute", begin, wire_.kernel.now());
-      }
+      co_await trace(unit);
     } else {
-      const CornerExchange& exchange = *unit.exchange;
-
-      // Antialiasing, phase 1: trace the corner samples this cell owns in each
-      // of the unit's frames (each of its pixels' top-left corner, and the
-      // screen's extra right column and bottom row where its pixels border them)
-      // into video memory.
-      for (int f = first; f < end; ++f) {
-        const Cycles begin = wire_.kernel.now();
-        try {
-          co_await wire_.kernel.delay(video_[f].corner_work.total());
-        } catch (const CycleOverflow& e) {
-          throw e.inside(fmt::format("{}'s corner tracing", cell_name(id_)));
-        }
-        wire_.timeline.span(track_, frame_name("trace corners", f), "compute", begin, wire_.kernel.now());
-      }
-      record_.trace_corners += wire_.kernel.now() - started;
-
-      // Phase 2: exchange corners with the neighbours, a vertical step and then a
-      // horizontal one (corner_exchange.h): send this step's messages, then take
-      // in this step's. A horizontal message that arrives during the vertical
-      // step waits in memory for its turn.
-      const Cycles exchange_start = wire_.kernel.now();
-      for (const ExchangeStep step : {ExchangeStep::Vertical, ExchangeStep::Horizontal}) {
-        const auto& sends = exchange.sends(id_, step);
-        for (std::size_t i = 0; i < sends.size(); ++i) {
-          const CornerMessage& m = sends[i];
-          if (step == ExchangeStep::Horizontal) check_holds(m, exchange);
-          const Cycles begin = wire_.kernel.now();
-          co_await wire_.links.send(id_, m.to, m.corners.size() * kScreenSampleBytes,
-                                    std::string(exchange_label(step)), exchange_payload(step, i));
-          record_.comm += wire_.kernel.now() - begin;
-          wire_.timeline.span(track_, fmt::format("send corners to {}", cell_name(m.to)), "message", begin,
-                              wire_.kernel.now(), m.corners.size() * kScreenSampleBytes);
-        }
-        const Cycles waiting = wire_.kernel.now();
-        int received = 0;
-        if (step == ExchangeStep::Horizontal) {
-          for (const LinkMessage& m : early_) take_in(m, exchange);
-          received = static_cast<int>(early_.size());
-          early_.clear();
-        }
-        while (received < exchange.receives(id_, step)) {
-          LinkMessage m = co_await link_inbox_.receive();
-          if (payload_step(m.payload) != step) {
-            early_.push_back(std::move(m));
-            continue;
-          }
-          take_in(m, exchange);
-          ++received;
-        }
-        if (wire_.kernel.now() > waiting)
-          wire_.timeline.span(track_, "wait for corners", "wait", waiting, wire_.kernel.now());
-      }
-      check_has_every_corner(exchange);
-      record_.corners_received += unit_received_.size();
-      // A later unit's corners are of later frames, so the list stays ascending.
-      if (wire_.keep_received_corners)
-        record_.received_corners.insert(record_.received_corners.end(), unit_received_.begin(), unit_received_.end());
-      unit_received_.clear();
-      record_.exchange += wire_.kernel.now() - exchange_start;
-
-      // Phase 3: subdivide its own pixels where their corners differ by the
-      // threshold or more, tracing the extra samples on its own clock.
-      const Cycles subdivide_start = wire_.kernel.now();
-      for (int f = first; f < end; ++f) {
-        const Cycles begin = wire_.kernel.now();
-        record_.frame_write_start[f] = begin;
-        try {
-          co_await wire_.kernel.delay(video_[f].subdivision_work.total());
-        } catch (const CycleOverflow& e) {
-          throw e.inside(fmt::format("{}'s subdivision", cell_name(id_)));
-        }
-        record_.frame_busy[f] = video_[f].work.total();
-        wire_.timeline.span(
-            track_,
-            frame_name(fmt::format("subdivide {} pixels", wire_.frames[f].layout.window(id_).pixel_count()), f),
-            "compute", begin, wire_.kernel.now());
-      }
-      record_.subdivide += wire_.kernel.now() - subdivide_start;
+      co_await trace_corners(unit);
+      co_await exchange_corners(*unit.exchange);
+      co_await subdivide(unit);
     }
-    for (int f = first; f < end; ++f) {
-      record_.work += video_[f].work;
-      record_.busy += video_[f].work.total();
-      record_.rays += video_[f].rays;
-      record_.ops += video_[f].ops;
-      record_.pixels += static_cast<std::uint64_t>(wire_.frames[f].layout.window(id_).pixel_count());
-    }
-
-    // Tell the host this cell is done with the unit.
-    const BusTransfer done =
-        co_await wire_.bus.transfer(id_, kHost, kDoneMessageBytes, std::string(kDoneMessage));
-    if (done.granted > done.requested)
-      wire_.timeline.span(track_, "wait for bus", "wait", done.requested, done.granted);
-    wire_.timeline.span(track_, "send done", "message", done.granted, done.delivered, done.bytes);
-    record_.comm += done.delivered - done.requested;
-    record_.finish = done.delivered;
-    record_.unit_finish.push_back(done.delivered);
+    co_await report_done();
   }
 }
 
-std::string Cell::frame_name(const std::string& what, int frame) const {
-  return wire_.frames.size() == 1 ? what : fmt::format("{}, frame {}", what, frame);
+// Every cell holds the same program and the same data (§3.3): it takes in what
+// the host broadcasts for the unit's frames, then waits for its start command.
+Task<> Cell::receive(std::size_t u) {
+  const DistributionUnit& unit = wire_.units[u];
+  Cycles waiting_since = clock_.now();
+  for (const Broadcast expected : unit_broadcasts(u == 0, unit.first_frame, unit.frames)) {
+    const BusTransfer t = co_await bus_inbox_.receive();
+    clock_.wait("wait for host", waiting_since, t.granted);
+    take_in(t, expected.message);
+    waiting_since = clock_.now();
+  }
+}
+
+// Trace the pixels this cell's window controller shows, frame after frame, in
+// order, into video memory: the clock advances by the cycles of every pixel's
+// operations. The host threads traced them ahead; nothing reaches a cell while
+// it traces, so its clock advances once per frame by their sum (the same time
+// as pixel by pixel, without an event per pixel).
+Task<> Cell::trace(const DistributionUnit& unit) {
+  for (const int f : unit.frame_numbers()) {
+    record_.frame_write_start[f] = clock_.now();
+    co_await clock_.compute(video_[f].work.total(), pixels_name("trace", f), "tracing");
+    count_frame(f);
+  }
+}
+
+// Antialiasing, phase 1: trace the corner samples this cell owns in each of
+// the unit's frames (each of its pixels' top-left corner, and the screen's
+// extra right column and bottom row where its pixels border them) into video
+// memory.
+Task<> Cell::trace_corners(const DistributionUnit& unit) {
+  const Cycles start = clock_.now();
+  for (const int f : unit.frame_numbers())
+    co_await clock_.compute(video_[f].corner_work.total(), frame_name("trace corners", f), "corner tracing");
+  record_.trace_corners += clock_.now() - start;
+}
+
+// Phase 2: exchange corners with the neighbours, a vertical step and then a
+// horizontal one (corner_exchange.h): in each, send this step's messages, then
+// take in this step's. Afterwards every corner its pixels need is here.
+Task<> Cell::exchange_corners(const CornerExchange& exchange) {
+  const Cycles start = clock_.now();
+  for (const ExchangeStep step : {ExchangeStep::Vertical, ExchangeStep::Horizontal}) {
+    co_await send_corners(exchange, step);
+    co_await receive_corners(exchange, step);
+  }
+  check_has_every_corner(exchange);
+  count_received_corners();
+  record_.exchange += clock_.now() - start;
+}
+
+// Phase 3: subdivide its own pixels where their corners differ by the
+// threshold or more, tracing the extra samples on its own clock.
+Task<> Cell::subdivide(const DistributionUnit& unit) {
+  const Cycles start = clock_.now();
+  for (const int f : unit.frame_numbers()) {
+    record_.frame_write_start[f] = clock_.now();
+    co_await clock_.compute(video_[f].subdivision_work.total(), pixels_name("subdivide", f), "subdivision",
+                            SpanCategory::Subdivide);
+    count_frame(f);
+  }
+  record_.subdivide += clock_.now() - start;
+}
+
+// Tell the host this cell is done with the unit: every pixel of its frames is
+// in video memory.
+Task<> Cell::report_done() {
+  const BusTransfer done = co_await wire_.bus.transfer(id_, kHost, kDoneMessageBytes, BusMessage::Done);
+  clock_.wait("wait for bus", done.requested, done.granted);
+  clock_.span("send done", SpanCategory::Message, done.granted, done.delivered, done.bytes);
+  record_.comm += done.delivered - done.requested;
+  record_.finish = done.delivered;
+  record_.unit_finish.push_back(done.delivered);
+}
+
+// A step's messages, in order; the sender continues as each has left it. What
+// the horizontal step relays must have come in the vertical one.
+Task<> Cell::send_corners(const CornerExchange& exchange, ExchangeStep step) {
+  const std::vector<CornerMessage>& sends = exchange.sends(id_, step);
+  for (std::size_t i = 0; i < sends.size(); ++i) {
+    const CornerMessage& m = sends[i];
+    if (step == ExchangeStep::Horizontal) check_holds(m, exchange);
+    const std::uint64_t bytes = m.corners.size() * kScreenSampleBytes;
+    const Cycles begin = clock_.now();
+    co_await wire_.links.send(id_, m.to, bytes, CornerPacket{step, i});
+    record_.comm += clock_.now() - begin;
+    clock_.span(fmt::format("send corners to {}", cell_name(m.to)), SpanCategory::Message, begin, clock_.now(),
+                bytes);
+  }
+}
+
+// Takes in every message of the step. A horizontal message that comes during
+// the vertical step waits in memory for its turn.
+Task<> Cell::receive_corners(const CornerExchange& exchange, ExchangeStep step) {
+  const Cycles waiting = clock_.now();
+  int received = 0;
+  if (step == ExchangeStep::Horizontal) {
+    for (const LinkMessage& m : early_) take_in(m, exchange);
+    received = static_cast<int>(early_.size());
+    early_.clear();
+  }
+  while (received < exchange.receives(id_, step)) {
+    LinkMessage m = co_await link_inbox_.receive();
+    if (m.packet.step != step) {
+      early_.push_back(std::move(m));
+      continue;
+    }
+    take_in(m, exchange);
+    ++received;
+  }
+  clock_.wait("wait for corners", waiting, clock_.now());
+}
+
+void Cell::count_frame(int f) {
+  const TracedCell& v = video_[f];
+  record_.frame_busy[f] = v.work.total();
+  record_.work += v.work;
+  record_.rays += v.rays;
+  record_.ops += v.ops;
+  record_.pixels += static_cast<std::uint64_t>(wire_.frames[f].layout.window(id_).pixel_count());
+}
+
+void Cell::count_received_corners() {
+  record_.corners_received += unit_received_.size();
+  // A later unit's corners are of later frames, so the list stays ascending.
+  if (wire_.keep_received_corners)
+    record_.received_corners.insert(record_.received_corners.end(), unit_received_.begin(), unit_received_.end());
+  unit_received_.clear();
+}
+
+std::string Cell::frame_name(std::string_view what, int frame) const {
+  return frame_span_name(what, frame, wire_.frames.size());
+}
+
+std::string Cell::pixels_name(std::string_view verb, int frame) const {
+  return frame_name(fmt::format("{} {} pixels", verb, wire_.frames[frame].layout.window(id_).pixel_count()), frame);
 }
 
 std::string Cell::cell_name(CellId id) const {
@@ -185,8 +180,7 @@ std::string Cell::cell_name(CellId id) const {
 }
 
 void Cell::take_in(const LinkMessage& m, const CornerExchange& exchange) {
-  const ExchangeStep step = payload_step(m.payload);
-  const CornerMessage& sent = exchange.sends(m.from, step).at(m.payload / 2);
+  const CornerMessage& sent = exchange.sends(m.from, m.packet.step).at(m.packet.index);
   if (sent.to != id_)
     throw std::logic_error(fmt::format("{} took in corners sent to {}", cell_name(id_), cell_name(sent.to)));
   unit_received_.insert(unit_received_.end(), sent.corners.begin(), sent.corners.end());
@@ -209,13 +203,13 @@ void Cell::check_has_every_corner(const CornerExchange& exchange) {
     throw std::logic_error(fmt::format("{} lacks corners it needs after the exchange", cell_name(id_)));
 }
 
-void Cell::take_in(const BusTransfer& t, std::string_view expected) {
-  if (t.label != expected)
+void Cell::take_in(const BusTransfer& t, BusMessage expected) {
+  if (t.message != expected)
     throw std::logic_error(fmt::format("cell {} expected \"{}\" from the host, got \"{}\"", id_,
-                                       expected, t.label));
+                                       to_string(expected), to_string(t.message)));
   record_.comm += t.delivered - t.granted;
-  wire_.timeline.span(track_, fmt::format("receive {}", t.label), "receive", t.granted, t.delivered,
-                      t.bytes);
+  clock_.span(fmt::format("receive {}", to_string(t.message)), SpanCategory::Receive, t.granted, t.delivered,
+              t.bytes);
 }
 
 }  // namespace capsim::sim

@@ -4,16 +4,21 @@
 
 #include "kernel/event_kernel.h"
 #include "kernel/mailbox.h"
+#include "kernel/task.h"
 #include "kernel/timeline.h"
 #include "machine/command_bus.h"
 #include "machine/corner_exchange.h"
 #include "machine/frame_work.h"
 #include "machine/neighbour_links.h"
+#include "machine/program_clock.h"
 #include "machine/traced_cells.h"
 #include "machine/window_controller.h"
 
 #include "capsim/render.h"
 
+#include <cstddef>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace capsim::sim {
@@ -57,7 +62,11 @@ class Cell {
   // Takes this cell's traced work out of every frame of wiring.frames.
   Cell(CellId id, int timeline_track, const Wiring& wiring);
 
-  // The program every cell runs: each distribution unit of the run in turn.
+  // The program every cell runs (§3.3), for each distribution unit of the run
+  // in turn: receive, trace, report done; antialiased: receive, trace
+  // corners, exchange corners, subdivide, report done. Precondition: the host
+  // broadcasts what unit_broadcasts() lists and collects a "done" from every
+  // cell before the next unit's broadcasts.
   Process run();
 
   Mailbox<BusTransfer>& bus_inbox() { return bus_inbox_; }
@@ -69,26 +78,44 @@ class Cell {
   const TracedCell& video_memory(int frame) const { return video_[frame]; }
 
  private:
-  void take_in(const BusTransfer& t, std::string_view expected);
+  // The phases of run(), each for one distribution unit (receive: by its
+  // index, the first unit's broadcasts beginning with the program).
+  Task<> receive(std::size_t u);
+  Task<> trace(const DistributionUnit& unit);
+  Task<> trace_corners(const DistributionUnit& unit);
+  Task<> exchange_corners(const CornerExchange& exchange);
+  Task<> subdivide(const DistributionUnit& unit);
+  Task<> report_done();
+  // The two halves of each step of exchange_corners.
+  Task<> send_corners(const CornerExchange& exchange, ExchangeStep step);
+  Task<> receive_corners(const CornerExchange& exchange, ExchangeStep step);
+
+  // A broadcast taken in; throws std::logic_error if it is not the one expected.
+  void take_in(const BusTransfer& t, BusMessage expected);
   // The antialiasing exchange's bookkeeping: a message's corners taken in; a
   // message to relay holds only corners this cell has; every corner its pixels
   // need has come (each throws std::logic_error if not).
   void take_in(const LinkMessage& m, const CornerExchange& exchange);
   void check_holds(const CornerMessage& m, const CornerExchange& exchange);
   void check_has_every_corner(const CornerExchange& exchange);
+  // The unit's exchange is over: the corners it took in, counted (and kept if
+  // asked), and forgotten.
+  void count_received_corners();
+  // Every pixel of frame f is in video memory: what the cell spent on them.
+  void count_frame(int f);
   std::string cell_name(CellId id) const;
-  // A span's name: `what`, with the frame's number when the run has several.
-  std::string frame_name(const std::string& what, int frame) const;
+  std::string frame_name(std::string_view what, int frame) const;
+  std::string pixels_name(std::string_view verb, int frame) const;  // "<verb> N pixels"
 
   CellId id_;
-  int track_;
   Wiring wire_;
+  CellRecord record_;
+  ProgramClock clock_;  // counts its busy cycles in record_.busy
   Mailbox<BusTransfer> bus_inbox_;
   Mailbox<LinkMessage> link_inbox_;
   std::vector<LinkMessage> early_;  // horizontal messages that came before the vertical ones
   std::vector<CornerIndex> unit_received_;  // corners taken in during this unit's exchange
   std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced
-  CellRecord record_;
 };
 
 }  // namespace capsim::sim

@@ -17,19 +17,19 @@ Cycles CommandBus::transfer_cycles(std::uint64_t bytes) const {
   return arbitration_ + profile_.bus_data_cycles(bytes) + latency_;
 }
 
-CommandBus::TransferAwaiter CommandBus::transfer(Endpoint sender, Endpoint receiver,
-                                                 std::uint64_t bytes, std::string label) {
+CommandBus::TransferAwaiter CommandBus::transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes,
+                                                 BusMessage message) {
   if (sender == kAllCells || sender == receiver)
     throw std::logic_error("bus transfer needs a sender and a different receiver");
   BusTransfer t;
-  t.label = std::move(label);
+  t.message = message;
   t.sender = sender;
   t.receiver = receiver;
   t.bytes = bytes;
   return TransferAwaiter{*this, std::move(t)};
 }
 
-void CommandBus::request(BusTransfer* transfer, ProcessHandle sender) {
+void CommandBus::request(BusTransfer* transfer, std::coroutine_handle<> sender) {
   transfer->requested = kernel_.now();
   pending_.push_back(Request{transfer, sender, next_sequence_++});
   schedule_arbitration();
@@ -62,7 +62,7 @@ void CommandBus::arbitrate() {
     t.released = t.granted + arbitration_ + profile_.bus_data_cycles(t.bytes);
     t.delivered = t.released + latency_;
   } catch (const CycleOverflow& e) {
-    throw e.inside(fmt::format("bus transfer \"{}\" granted at cycle {}", t.label, t.granted.count()));
+    throw e.inside(fmt::format("bus transfer \"{}\" granted at cycle {}", to_string(t.message), t.granted.count()));
   }
 
   kernel_.schedule(t.released, EventPriority::Arbitration, [this] {

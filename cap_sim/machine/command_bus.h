@@ -14,6 +14,7 @@
 
 #include "kernel/event_kernel.h"
 #include "machine/cost_profile.h"
+#include "machine/frame_protocol.h"
 
 #include <cstdint>
 #include <functional>
@@ -28,7 +29,7 @@ inline constexpr Endpoint kHost = -1;
 inline constexpr Endpoint kAllCells = -2;
 
 struct BusTransfer {
-  std::string label;
+  BusMessage message = BusMessage::Start;
   Endpoint sender = kHost;
   Endpoint receiver = kAllCells;
   std::uint64_t bytes = 0;
@@ -55,11 +56,10 @@ class CommandBus {
     CommandBus& bus;
     BusTransfer transfer;
     bool await_ready() const noexcept { return false; }
-    void await_suspend(ProcessHandle h) { bus.request(&transfer, h); }
+    void await_suspend(std::coroutine_handle<> h) { bus.request(&transfer, h); }
     BusTransfer await_resume() { return std::move(transfer); }
   };
-  TransferAwaiter transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes,
-                           std::string label);
+  TransferAwaiter transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes, BusMessage message);
 
   // Every completed transfer, in delivery order.
   const std::vector<BusTransfer>& log() const { return log_; }
@@ -67,10 +67,10 @@ class CommandBus {
  private:
   struct Request {
     BusTransfer* transfer;  // lives in the waiting sender's frame
-    ProcessHandle sender;
+    std::coroutine_handle<> sender;
     std::uint64_t sequence;
   };
-  void request(BusTransfer* transfer, ProcessHandle sender);
+  void request(BusTransfer* transfer, std::coroutine_handle<> sender);
   void schedule_arbitration();
   void arbitrate();
 

@@ -25,6 +25,7 @@
 // the same messages, one per pair of cells and step.
 
 #include "machine/cell_grid.h"
+#include "machine/frame_protocol.h"
 #include "machine/window_controller.h"
 
 #include <cstdint>
@@ -41,8 +42,6 @@ struct CornerMessage {
   CellId to = 0;
   std::vector<CornerIndex> corners;  // ascending
 };
-
-enum class ExchangeStep { Vertical, Horizontal };
 
 class CornerExchange {
  public:

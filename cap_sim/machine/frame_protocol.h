@@ -1,41 +1,75 @@
 #pragma once
-// What the host and the cells say to each other over the command bus for one
-// distribution unit (a frame, or a group of frame-averaged frames), in this
-// order:
-//   host -> all cells  "program"     the tracer program (profile.program_bytes),
-//                                    before the first unit only
-//   host -> all cells  "scene"       primitives, status tree, camera, lights  } each
-//   host -> all cells  "voxel data"  the voxel grid                           } frame
-//   host -> all cells  "start"       the start command (kStartCommandBytes)
-//   cell -> host       "done"        the cell has every pixel of the unit in video
-//                                    memory (kDoneMessageBytes: the cell's id)
+// What the host and the cells say to each other for one distribution unit (a
+// frame, or a group of frame-averaged frames).
+//
+// Over the command bus (BusMessage), in this order:
+//   host -> all cells  program     the tracer program (profile.program_bytes),
+//                                  before the first unit only
+//   host -> all cells  scene       primitives, status tree, camera, lights  } each
+//   host -> all cells  voxel data  the voxel grid                           } frame
+//   host -> all cells  start       the start command (kStartCommandBytes)
+//   cell -> host       done        the cell has every pixel of the unit in video
+//                                  memory (kDoneMessageBytes: the cell's id)
+// Over the neighbour links, antialiased only, from cell to cell: the corner
+// exchange's messages (CornerPacket; corner_exchange.h plans them).
 
-#include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 #include <vector>
 
 namespace capsim::sim {
 
-inline constexpr std::string_view kProgramBroadcast = "program";
-inline constexpr std::string_view kSceneBroadcast = "scene";
-inline constexpr std::string_view kVoxelBroadcast = "voxel data";
-inline constexpr std::string_view kStartCommand = "start";
-inline constexpr std::string_view kDoneMessage = "done";
+enum class BusMessage : std::uint8_t { Program, Scene, VoxelData, Start, Done };
 
-// The broadcasts every cell receives before it starts a unit, in order.
-inline std::vector<std::string_view> unit_broadcasts(bool first_unit, int frames) {
-  std::vector<std::string_view> labels;
-  if (first_unit) labels.push_back(kProgramBroadcast);
-  for (int f = 0; f < frames; ++f) {
-    labels.push_back(kSceneBroadcast);
-    labels.push_back(kVoxelBroadcast);
-  }
-  labels.push_back(kStartCommand);
-  return labels;
-}
+// The one table of bus messages: each value and its name as the timeline and
+// the reports print it ("broadcast voxel data", "done (cell[0,3])"), in the
+// enum's order.
+struct BusMessageName {
+  BusMessage message;
+  std::string_view name;
+};
+inline constexpr BusMessageName kBusMessages[] = {
+    {BusMessage::Program, "program"}, {BusMessage::Scene, "scene"}, {BusMessage::VoxelData, "voxel data"},
+    {BusMessage::Start, "start"},     {BusMessage::Done, "done"},
+};
+
+constexpr std::string_view to_string(BusMessage m) { return kBusMessages[static_cast<std::size_t>(m)].name; }
+
+// One broadcast before a unit: its message and, for a scene or voxel data, the
+// run's frame it describes (-1 for the others).
+struct Broadcast {
+  BusMessage message = BusMessage::Start;
+  int frame = -1;
+
+  bool operator==(const Broadcast&) const = default;
+};
+
+// The broadcasts every cell receives before it starts the unit of `frames`
+// frames from first_frame, in order: the program (before the first unit
+// only), each frame's scene and voxel data, the start command.
+std::vector<Broadcast> unit_broadcasts(bool first_unit, int first_frame, int frames);
 
 inline constexpr std::uint64_t kStartCommandBytes = 4;  // one command word
 inline constexpr std::uint64_t kDoneMessageBytes = 4;   // the sender's cell id
+
+// The corner exchange's two steps: the corners go vertically first, then
+// horizontally (corner_exchange.h).
+enum class ExchangeStep : std::uint8_t { Vertical, Horizontal };
+
+// A message of the corner exchange: its step and its place among its sender's
+// messages of that step (CornerExchange::sends(sender, step)[index]), where
+// its receiver finds which corners it carries.
+struct CornerPacket {
+  ExchangeStep step = ExchangeStep::Vertical;
+  std::size_t index = 0;
+
+  bool operator==(const CornerPacket&) const = default;
+};
+
+// Its name on the link tracks: "corners (vertical step)".
+constexpr std::string_view to_string(const CornerPacket& p) {
+  return p.step == ExchangeStep::Vertical ? "corners (vertical step)" : "corners (horizontal step)";
+}
 
 }  // namespace capsim::sim

@@ -15,6 +15,9 @@
 
 #include <cstdint>
 #include <memory>
+#include <ranges>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace capsim::sim {
@@ -30,6 +33,8 @@ struct FrameWork {
 struct DistributionUnit {
   int first_frame = 0;
   int frames = 1;
+  // The run's numbers of the unit's frames, in order.
+  auto frame_numbers() const { return std::views::iota(first_frame, first_frame + frames); }
   // Antialiasing: the corner exchange of all the unit's frames at once. It is
   // planned as the unit starts and dropped once every cell has finished it
   // (the cells have taken in all its messages by then), so that a run holds
@@ -38,5 +43,9 @@ struct DistributionUnit {
   std::unique_ptr<CornerExchange> exchange;
   std::vector<std::uint64_t> corners_needed;
 };
+
+// A timeline span's name for work on one frame: `what`, with the frame's
+// number when the run has several (frame_count > 1).
+std::string frame_span_name(std::string_view what, int frame, std::size_t frame_count);
 
 }  // namespace capsim::sim

@@ -11,56 +11,65 @@ namespace capsim::sim {
 
 Host::Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes)
     : wire_(wiring),
-      track_(timeline_track),
       cell_count_(cell_count),
       program_bytes_(program_bytes),
+      clock_(wiring.kernel, wiring.timeline, timeline_track, "the host", busy_),
       bus_inbox_(wiring.kernel) {}
 
 Process Host::run() {
-  const bool sequence = wire_.frames.size() > 1;
-  auto frame_name = [&](std::string_view what, int f) {
-    return sequence ? fmt::format("{}, frame {}", what, f) : std::string(what);
-  };
   for (std::size_t u = 0; u < wire_.units.size(); ++u) {
-    const DistributionUnit& unit = wire_.units[u];
-    const int first = unit.first_frame, end = unit.first_frame + unit.frames;
     if (wire_.unit_begins) wire_.unit_begins(u);
-    unit_start_.push_back(wire_.kernel.now());
-
-    // Voxel generation runs on the host before anything is sent (§5: "done on
-    // the host today").
-    for (int f = first; f < end; ++f) {
-      const Cycles start = wire_.kernel.now();
-      co_await wire_.kernel.delay(wire_.frames[f].voxel_generation);
-      wire_.timeline.span(track_, frame_name("voxel generation", f), "compute", start, wire_.kernel.now());
-    }
-
-    // Broadcast the program (once), each frame's scene and voxel data, then the
-    // start command: each one transfer that reaches every cell.
-    std::vector<std::pair<std::string_view, std::uint64_t>> broadcasts;
-    if (u == 0) broadcasts.emplace_back(kProgramBroadcast, program_bytes_);
-    for (int f = first; f < end; ++f) {
-      broadcasts.emplace_back(kSceneBroadcast, wire_.frames[f].footprint.scene_bytes());
-      broadcasts.emplace_back(kVoxelBroadcast, wire_.frames[f].footprint.voxel_bytes());
-    }
-    broadcasts.emplace_back(kStartCommand, kStartCommandBytes);
-    for (const auto& [label, bytes] : broadcasts) {
-      const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes, std::string(label));
-      wire_.timeline.span(track_, fmt::format("broadcast {}", label), "broadcast", t.granted, t.delivered,
-                          t.bytes);
-    }
-
-    // Collect one completion message from every cell.
-    const Cycles collecting = wire_.kernel.now();
-    for (int received = 0; received < cell_count_; ++received) {
-      const BusTransfer t = co_await bus_inbox_.receive();
-      if (t.label != kDoneMessage)
-        throw std::logic_error(fmt::format("host expected \"done\", got \"{}\"", t.label));
-    }
-    unit_end_.push_back(wire_.kernel.now());
-    wire_.timeline.span(track_, "wait for cells", "wait", collecting, wire_.kernel.now());
+    unit_start_.push_back(clock_.now());
+    co_await generate_voxels(wire_.units[u]);
+    co_await broadcast(u);
+    co_await collect_done();
     if (wire_.unit_ends) wire_.unit_ends(u);
   }
+}
+
+// Voxel generation (Algorithm-3) runs on the host before anything is sent (§5:
+// "done on the host today"). Its cost was located when the frame's work was
+// made (frame_work), so an overflow here is the run's clock, as the kernel
+// words it.
+Task<> Host::generate_voxels(const DistributionUnit& unit) {
+  for (const int f : unit.frame_numbers())
+    co_await clock_.compute(wire_.frames[f].voxel_generation,
+                            frame_span_name("voxel generation", f, wire_.frames.size()));
+}
+
+// Broadcast the program (before the first unit only), each frame's scene and
+// voxel data, then the start command: each one transfer that reaches every
+// cell.
+Task<> Host::broadcast(std::size_t u) {
+  const DistributionUnit& unit = wire_.units[u];
+  for (const Broadcast b : unit_broadcasts(u == 0, unit.first_frame, unit.frames)) {
+    const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes_of(b), b.message);
+    clock_.span(fmt::format("broadcast {}", to_string(b.message)), SpanCategory::Broadcast, t.granted, t.delivered,
+                t.bytes);
+  }
+}
+
+// Collect one completion message from every cell: the unit ends with the last.
+Task<> Host::collect_done() {
+  const Cycles collecting = clock_.now();
+  for (int received = 0; received < cell_count_; ++received) {
+    const BusTransfer t = co_await bus_inbox_.receive();
+    if (t.message != BusMessage::Done)
+      throw std::logic_error(fmt::format("host expected \"done\", got \"{}\"", to_string(t.message)));
+  }
+  unit_end_.push_back(clock_.now());
+  clock_.span("wait for cells", SpanCategory::Wait, collecting, clock_.now());
+}
+
+std::uint64_t Host::bytes_of(const Broadcast& b) const {
+  switch (b.message) {
+    case BusMessage::Program: return program_bytes_;
+    case BusMessage::Scene: return wire_.frames[b.frame].footprint.scene_bytes();
+    case BusMessage::VoxelData: return wire_.frames[b.frame].footprint.voxel_bytes();
+    case BusMessage::Start: return kStartCommandBytes;
+    case BusMessage::Done: break;
+  }
+  throw std::logic_error(fmt::format("the host does not broadcast \"{}\"", to_string(b.message)));
 }
 
 }  // namespace capsim::sim

@@ -8,10 +8,13 @@
 
 #include "kernel/event_kernel.h"
 #include "kernel/mailbox.h"
+#include "kernel/task.h"
 #include "kernel/timeline.h"
 #include "machine/command_bus.h"
 #include "machine/cost_profile.h"
+#include "machine/frame_protocol.h"
 #include "machine/frame_work.h"
+#include "machine/program_clock.h"
 
 #include <cstddef>
 #include <functional>
@@ -35,7 +38,9 @@ class Host {
 
   Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes);
 
-  // The host's program: each unit in turn.
+  // The host's program, for each unit in turn: generate its frames' voxel
+  // data, broadcast it, start the cells, collect their "done". Precondition:
+  // every one of the cell_count cells runs Cell::run on the same units.
   Process run();
 
   Mailbox<BusTransfer>& bus_inbox() { return bus_inbox_; }
@@ -43,12 +48,23 @@ class Host {
   // last cell's completion message arrived); the last end is the run's time.
   const std::vector<Cycles>& unit_start() const { return unit_start_; }
   const std::vector<Cycles>& unit_end() const { return unit_end_; }
+  // The cycles it spent generating voxel data, all units.
+  Cycles busy() const { return busy_; }
 
  private:
+  // The phases of run(), each for one unit.
+  Task<> generate_voxels(const DistributionUnit& unit);
+  Task<> broadcast(std::size_t unit);
+  Task<> collect_done();
+  // The bytes of a broadcast: the program, a frame's scene or voxel data
+  // (its footprint), the start command.
+  std::uint64_t bytes_of(const Broadcast& b) const;
+
   Wiring wire_;
-  int track_;
   int cell_count_;
   std::uint64_t program_bytes_;
+  Cycles busy_;
+  ProgramClock clock_;  // counts its busy cycles in busy_
   Mailbox<BusTransfer> bus_inbox_;
   std::vector<Cycles> unit_start_, unit_end_;
 };

@@ -59,21 +59,19 @@ std::vector<CellId> NeighbourLinks::route(CellId from, CellId to) const {
   return cells;
 }
 
-NeighbourLinks::SendAwaiter NeighbourLinks::send(CellId from, CellId to, std::uint64_t bytes,
-                                                 std::string label, std::uint64_t payload) {
+NeighbourLinks::SendAwaiter NeighbourLinks::send(CellId from, CellId to, std::uint64_t bytes, CornerPacket packet) {
   const int n = grid_.cell_count();
   if (from < 0 || from >= n || to < 0 || to >= n || from == to)
     throw std::logic_error("link message needs two different cells of the grid");
   LinkMessage m;
-  m.label = std::move(label);
+  m.packet = packet;
   m.from = from;
   m.to = to;
   m.bytes = bytes;
-  m.payload = payload;
   return SendAwaiter{*this, std::move(m)};
 }
 
-void NeighbourLinks::start(LinkMessage m, ProcessHandle sender) {
+void NeighbourLinks::start(LinkMessage m, std::coroutine_handle<> sender) {
   m.sent = kernel_.now();
   const CellId from = m.from;
   kernel_.resume_at(forward(std::move(m), from), sender);
@@ -105,7 +103,7 @@ Cycles NeighbourLinks::forward(LinkMessage m, CellId at) {
     last_bit = start + data;
     delivered = last_bit + profile_.link.latency;
   } catch (const CycleOverflow& e) {
-    throw e.inside(fmt::format("link message \"{}\" sent from cell {} at cycle {}", m.label, at,
+    throw e.inside(fmt::format("link message \"{}\" sent from cell {} at cycle {}", to_string(m.packet), at,
                                start.count()));
   }
   free_at = last_bit;
@@ -114,7 +112,7 @@ Cycles NeighbourLinks::forward(LinkMessage m, CellId at) {
   t.bytes += m.bytes;
   t.busy += data;
   t.max_wait = std::max(t.max_wait, start - kernel_.now());
-  hops_.push_back({at, d, m.label, start, last_bit, m.bytes});
+  hops_.push_back({at, d, m.packet, start, last_bit, m.bytes});
   kernel_.schedule(delivered, EventPriority::Delivery,
                    [this, m = std::move(m), next]() mutable {
                      ++m.hops;

@@ -13,6 +13,7 @@
 #include "kernel/event_kernel.h"
 #include "machine/cell_grid.h"
 #include "machine/cost_profile.h"
+#include "machine/frame_protocol.h"
 
 #include <cstdint>
 #include <functional>
@@ -22,14 +23,13 @@
 namespace capsim::sim {
 
 struct LinkMessage {
-  std::string label;
+  CornerPacket packet;
   CellId from = 0;
   CellId to = 0;
   std::uint64_t bytes = 0;
   Cycles sent;     // the sender handed it to its first link
   Cycles arrived;  // it is in the destination's memory
   int hops = 0;
-  std::uint64_t payload = 0;  // the sender's tag for what it carries
 };
 
 // One direction of one link, from `cell` toward `direction`.
@@ -46,7 +46,7 @@ struct LinkTraffic {
 struct LinkHop {
   CellId cell = 0;
   Direction direction = Direction::North;
-  std::string label;
+  CornerPacket packet;
   Cycles begin, end;
   std::uint64_t bytes = 0;
 };
@@ -69,11 +69,10 @@ class NeighbourLinks {
     NeighbourLinks& links;
     LinkMessage message;
     bool await_ready() const noexcept { return false; }
-    void await_suspend(ProcessHandle h) { links.start(std::move(message), h); }
+    void await_suspend(std::coroutine_handle<> h) { links.start(std::move(message), h); }
     void await_resume() const noexcept {}
   };
-  SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, std::string label,
-                   std::uint64_t payload = 0);
+  SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, CornerPacket packet);
 
   // Delivered messages, in order of arrival.
   const std::vector<LinkMessage>& log() const { return log_; }
@@ -85,7 +84,7 @@ class NeighbourLinks {
  private:
   CellId next_hop(CellId at, CellId to) const;
   Direction direction_of(CellId at, CellId next) const;
-  void start(LinkMessage m, ProcessHandle sender);
+  void start(LinkMessage m, std::coroutine_handle<> sender);
   // Queues the message on the link from `at` toward its next hop; returns the
   // cycle its last bit leaves `at`.
   Cycles forward(LinkMessage m, CellId at);

@@ -19,7 +19,7 @@ nlohmann::json chrome_trace(const Timeline& timeline, const std::string& process
     json args = {{"begin_cycles", s.begin.count()}, {"end_cycles", s.end.count()}};
     if (s.bytes) args["bytes"] = s.bytes;
     events.push_back({{"name", s.name},
-                      {"cat", s.category},
+                      {"cat", std::string(to_string(s.category))},
                       {"ph", "X"},
                       {"pid", 1},
                       {"tid", s.track},

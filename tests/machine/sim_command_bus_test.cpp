@@ -13,7 +13,7 @@ namespace {
 Process send_after(EventKernel& k, CommandBus& bus, Endpoint who, Cycles wait, std::uint64_t bytes,
                    std::vector<BusTransfer>& done) {
   co_await k.delay(wait);
-  done.push_back(co_await bus.transfer(who, kHost, bytes, "message"));
+  done.push_back(co_await bus.transfer(who, kHost, bytes, BusMessage::Done));
 }
 
 TEST(CommandBus, TransferTakesArbitrationPlusBytesOverBandwidthPlusLatency) {
@@ -50,13 +50,15 @@ TEST(CommandBus, SameCycleRequestsAreGrantedHostFirstThenLowestCell) {
   for (Endpoint who : {5, 2, 9}) k.spawn(send_after(k, bus, who, Cycles(0), 1, done));
   bool host_done = false;
   k.spawn([](EventKernel&, CommandBus& b, bool& flag) -> Process {
-    co_await b.transfer(kHost, 3, 1, "to cell 3");
+    co_await b.transfer(kHost, 3, 1, BusMessage::Start);
     flag = true;
   }(k, bus, host_done));
   k.run();
   ASSERT_TRUE(host_done);
   const std::vector<BusTransfer>& log = bus.log();
   ASSERT_EQ(log.size(), 4u);
+  EXPECT_EQ(log[0].message, BusMessage::Start);
+  EXPECT_EQ(log[1].message, BusMessage::Done);
   std::vector<Endpoint> order;
   for (const BusTransfer& t : log) order.push_back(t.sender);
   EXPECT_EQ(order, (std::vector<Endpoint>{kHost, 2, 5, 9}));
@@ -95,7 +97,7 @@ TEST(CommandBus, BroadcastIsOneTransferSeenByTheDeliveryHandlerOnce) {
     EXPECT_EQ(k.now(), Cycles(3 + 1000 + 2));
     ++deliveries;
   });
-  k.spawn([](CommandBus& b) -> Process { co_await b.transfer(kHost, kAllCells, 100, "scene"); }(bus));
+  k.spawn([](CommandBus& b) -> Process { co_await b.transfer(kHost, kAllCells, 100, BusMessage::Scene); }(bus));
   k.run();
   EXPECT_EQ(deliveries, 1);
 }

@@ -1,7 +1,8 @@
-// The discrete-event kernel: event order, processes, mailboxes.
+// The discrete-event kernel: event order, processes, mailboxes, tasks.
 
 #include "kernel/event_kernel.h"
 #include "kernel/mailbox.h"
+#include "kernel/task.h"
 
 #include <gtest/gtest.h>
 
@@ -131,6 +132,111 @@ TEST(EventKernel, RethrowsWhatAProcessLetsEscape) {
   EventKernel k;
   k.spawn(failing(k));
   EXPECT_THROW(k.run(), std::runtime_error);
+}
+
+// A step of a program as a task: its delays are the process's.
+Task<std::uint64_t> step(EventKernel& k, std::uint64_t cycles, std::vector<std::uint64_t>& times) {
+  co_await k.delay(Cycles(cycles));
+  times.push_back(k.now().count());
+  co_return k.now().count();
+}
+
+Task<> two_steps(EventKernel& k, std::vector<std::uint64_t>& times) {
+  co_await step(k, 2, times);
+  co_await step(k, 3, times);
+}
+
+TEST(Task, RunsAsPartOfTheAwaitingProcessWithoutEventsOfItsOwn) {
+  // The same delays written in one body and split into tasks, nested two deep:
+  // the same cycles and the same number of events.
+  EventKernel flat;
+  std::vector<std::uint64_t> flat_times;
+  flat.spawn([](EventKernel& k, std::vector<std::uint64_t>& times) -> Process {
+    for (const std::uint64_t c : {2, 3, 4, 2, 3}) {
+      co_await k.delay(Cycles(c));
+      times.push_back(k.now().count());
+    }
+  }(flat, flat_times));
+  flat.run();
+
+  EventKernel k;
+  std::vector<std::uint64_t> times;
+  std::uint64_t returned = 0;
+  k.spawn([](EventKernel& k, std::vector<std::uint64_t>& times, std::uint64_t& returned) -> Process {
+    co_await two_steps(k, times);
+    returned = co_await step(k, 4, times);
+    co_await two_steps(k, times);
+  }(k, times, returned));
+  k.run();
+  EXPECT_EQ(times, (std::vector<std::uint64_t>{2, 5, 9, 11, 14}));
+  EXPECT_EQ(times, flat_times);
+  EXPECT_EQ(returned, 9u);
+  EXPECT_TRUE(k.all_processes_finished());
+  // One event to start the process, one per delay.
+  EXPECT_EQ(k.events_run(), 6u);
+  EXPECT_EQ(k.events_run(), flat.events_run());
+}
+
+Task<int> receive_in_task(Mailbox<int>& box) {
+  const int m = co_await box.receive();
+  co_return m * 10;
+}
+
+TEST(Task, WaitsForAMessageInTheProcessesPlace) {
+  EventKernel k;
+  Mailbox<int> box(k);
+  std::vector<std::pair<int, std::uint64_t>> got;
+  k.spawn([](EventKernel& k, Mailbox<int>& box, std::vector<std::pair<int, std::uint64_t>>& got) -> Process {
+    for (int i = 0; i < 3; ++i) got.emplace_back(co_await receive_in_task(box), k.now().count());
+  }(k, box, got));
+  k.spawn(producer(k, box));
+  k.run();
+  EXPECT_EQ(got, (std::vector<std::pair<int, std::uint64_t>>{{10, 5}, {20, 5}, {30, 10}}));
+  EXPECT_TRUE(k.all_processes_finished());
+}
+
+Task<> failing_step(EventKernel& k) {
+  co_await k.delay(Cycles(1));
+  throw std::runtime_error("step failed");
+}
+
+TEST(Task, AnExceptionReachesTheAwaitingProcess) {
+  EventKernel k;
+  std::string caught;
+  k.spawn([](EventKernel& k, std::string& caught) -> Process {
+    try {
+      co_await failing_step(k);
+    } catch (const std::runtime_error& e) {
+      caught = e.what();
+    }
+    co_await k.delay(Cycles(1));
+  }(k, caught));
+  k.run();
+  EXPECT_EQ(caught, "step failed");
+  EXPECT_EQ(k.now(), Cycles(2));
+  EXPECT_TRUE(k.all_processes_finished());
+}
+
+TEST(Task, AnExceptionNoneCatchesLeavesTheRun) {
+  EventKernel k;
+  k.spawn([](EventKernel& k) -> Process { co_await failing_step(k); }(k));
+  EXPECT_THROW(k.run(), std::runtime_error);
+}
+
+TEST(Task, AnOverflowInsideATaskReachesItsProcess) {
+  EventKernel k;
+  bool overflowed = false;
+  k.spawn([](EventKernel& k, bool& overflowed) -> Process {
+    co_await k.delay(Cycles(10));
+    try {
+      co_await [](EventKernel& k) -> Task<> { co_await k.delay(Cycles(Cycles::kMax)); }(k);
+    } catch (const CycleOverflow&) {
+      overflowed = true;
+    }
+  }(k, overflowed));
+  k.run();
+  EXPECT_TRUE(overflowed);
+  EXPECT_TRUE(k.all_processes_finished());
 }
 
 }  // namespace

@@ -8,11 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <map>
-#include <string>
 #include <tuple>
 
 namespace capsim::sim {
 namespace {
+
+// The links carry corner packets; here each packet's index tells the messages
+// apart.
+CornerPacket packet(std::size_t index) { return {ExchangeStep::Vertical, index}; }
 
 TEST(NeighbourLinks, RoutesAlongTheRowFirstThenTheColumn) {
   const CostProfile profile = testing::round_number_profile();
@@ -31,7 +34,7 @@ TEST(NeighbourLinks, StoreAndForwardPaysEveryHopInFull) {
   EXPECT_EQ(links.hop_cycles(4), Cycles(37));
   Cycles sender_free;
   k.spawn([](EventKernel& k, NeighbourLinks& l, Cycles& free) -> Process {
-    co_await l.send(0, 11, 4, "far");
+    co_await l.send(0, 11, 4, packet(0));
     free = k.now();
   }(k, links, sender_free));
   k.run();
@@ -41,12 +44,14 @@ TEST(NeighbourLinks, StoreAndForwardPaysEveryHopInFull) {
   EXPECT_EQ(links.log()[0].arrived, Cycles(5 * 37));
 }
 
+enum Neighbour : std::size_t { kRight, kLower, kLowerRight };
+
 Process exchange(NeighbourLinks& links, CellGrid grid, CellId self) {
   const auto right = grid.neighbour(self, Direction::East);
   const auto lower = grid.neighbour(self, Direction::South);
-  if (right) co_await links.send(self, *right, 4, "right");
-  if (lower) co_await links.send(self, *lower, 4, "lower");
-  if (right && lower) co_await links.send(self, *grid.neighbour(*right, Direction::South), 4, "lower-right");
+  if (right) co_await links.send(self, *right, 4, packet(kRight));
+  if (lower) co_await links.send(self, *lower, 4, packet(kLower));
+  if (right && lower) co_await links.send(self, *grid.neighbour(*right, Direction::South), 4, packet(kLowerRight));
 }
 
 TEST(NeighbourLinks, SyntheticExchangeArrivesOnTheExpectedCycles) {
@@ -64,8 +69,8 @@ TEST(NeighbourLinks, SyntheticExchangeArrivesOnTheExpectedCycles) {
   //                (a cell of the last column has no right: [0, S) -> 37)
   //   lower-right: E link [2S, 3S), in the right cell at 3S + L; its S link is
   //                free since 2S, [3S + L, 4S + L)    -> arrives 4S + 2L      = 138
-  std::map<std::tuple<CellId, CellId, std::string>, std::uint64_t> arrivals;
-  for (const LinkMessage& m : links.log()) arrivals[{m.from, m.to, m.label}] = m.arrived.count();
+  std::map<std::tuple<CellId, CellId, std::size_t>, std::uint64_t> arrivals;
+  for (const LinkMessage& m : links.log()) arrivals[{m.from, m.to, m.packet.index}] = m.arrived.count();
 
   std::size_t expected_messages = 0;
   for (CellId c = 0; c < grid.cell_count(); ++c) {
@@ -73,21 +78,21 @@ TEST(NeighbourLinks, SyntheticExchangeArrivesOnTheExpectedCycles) {
     const bool has_right = p.col + 1 < grid.cols;
     const bool has_lower = p.row + 1 < grid.rows;
     if (has_right) {
-      EXPECT_EQ((arrivals[{c, c + 1, "right"}]), 37u) << "cell " << c;
+      EXPECT_EQ((arrivals[{c, c + 1, kRight}]), 37u) << "cell " << c;
       ++expected_messages;
     }
     if (has_lower) {
-      EXPECT_EQ((arrivals[{c, c + grid.cols, "lower"}]), has_right ? 69u : 37u) << "cell " << c;
+      EXPECT_EQ((arrivals[{c, c + grid.cols, kLower}]), has_right ? 69u : 37u) << "cell " << c;
       ++expected_messages;
     }
     if (has_right && has_lower) {
-      EXPECT_EQ((arrivals[{c, c + grid.cols + 1, "lower-right"}]), 138u) << "cell " << c;
+      EXPECT_EQ((arrivals[{c, c + grid.cols + 1, kLowerRight}]), 138u) << "cell " << c;
       ++expected_messages;
     }
   }
   EXPECT_EQ(links.log().size(), expected_messages);
   for (const LinkMessage& m : links.log())
-    EXPECT_EQ(m.hops, m.label == "lower-right" ? 2 : 1);
+    EXPECT_EQ(m.hops, m.packet.index == kLowerRight ? 2 : 1);
 }
 
 TEST(NeighbourLinks, MessagesOnOneLinkQueueInOrder) {
@@ -97,21 +102,21 @@ TEST(NeighbourLinks, MessagesOnOneLinkQueueInOrder) {
   // Two cells' worth of traffic on one link: cell 0 sends twice without waiting
   // in between; a second process of cell 0 sends a third at cycle 10.
   k.spawn([](NeighbourLinks& l) -> Process {
-    co_await l.send(0, 1, 1, "a");
-    co_await l.send(0, 1, 1, "b");
+    co_await l.send(0, 1, 1, packet(0));
+    co_await l.send(0, 1, 1, packet(1));
   }(links));
   k.spawn([](EventKernel& k, NeighbourLinks& l) -> Process {
     co_await k.delay(Cycles(10));
-    co_await l.send(0, 1, 1, "c");
+    co_await l.send(0, 1, 1, packet(2));
   }(k, links));
   k.run();
   ASSERT_EQ(links.log().size(), 3u);
   // a: [0, 8) -> 13; c asks at 10, while b holds the link [8, 16); c: [16, 24) -> 29.
-  EXPECT_EQ(links.log()[0].label, "a");
+  EXPECT_EQ(links.log()[0].packet, packet(0));
   EXPECT_EQ(links.log()[0].arrived, Cycles(13));
-  EXPECT_EQ(links.log()[1].label, "b");
+  EXPECT_EQ(links.log()[1].packet, packet(1));
   EXPECT_EQ(links.log()[1].arrived, Cycles(21));
-  EXPECT_EQ(links.log()[2].label, "c");
+  EXPECT_EQ(links.log()[2].packet, packet(2));
   EXPECT_EQ(links.log()[2].arrived, Cycles(29));
 }
 

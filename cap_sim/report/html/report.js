@@ -355,10 +355,10 @@
     compute: '#4e79a7', subdivide: '#9cbbe0', broadcast: '#f28e2b', receive: '#76b7b2', message: '#e15759',
     wait: '#c9ced6', link: '#59a14f',
   };
-  // Antialiased, a cell's subdivision (phase 3) follows its corner tracing
-  // (phase 1) with no gap: a lighter shade tells them apart.
-  const spanColour = (s) => kCategoryColours[s.cat === 'compute' && s.name.startsWith('subdivide') ? 'subdivide' :
-    s.cat] || '#888';
+  // By the span's category, as the trace writes it (kernel/timeline.h). Antialiased,
+  // a cell's subdivision (phase 3) follows its corner tracing (phase 1) with no
+  // gap: its own category, a lighter shade, tells them apart.
+  const spanColour = (s) => kCategoryColours[s.cat] || '#888';
 
   // A round step (1, 2 or 5 times a power of ten) that puts a tick every
   // hundred pixels or so.
