@@ -70,7 +70,10 @@ CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int firs
         need(x - 1, y - 1);
         need(x, y - 1);
         need(x - 1, y);
-        std::sort(needers, needers + count);
+        // In ascending order, by insertion: at most three. (std::sort here makes
+        // GCC 12 warn of subscripts past the array it cannot bound.)
+        for (int i = 1; i < count; ++i)
+          for (int j = i; j > 0 && needers[j] < needers[j - 1]; --j) std::swap(needers[j], needers[j - 1]);
         for (int i = 0; i < count; ++i) {
           const CellId n = needers[i];
           needs_[n].push_back(c);
