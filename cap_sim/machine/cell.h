@@ -6,6 +6,7 @@
 #include "kernel/mailbox.h"
 #include "kernel/task.h"
 #include "kernel/timeline.h"
+#include "machine/cell_record.h"
 #include "machine/command_bus.h"
 #include "machine/corner_exchange.h"
 #include "machine/frame_work.h"
@@ -22,28 +23,6 @@
 #include <vector>
 
 namespace capsim::sim {
-
-// What a cell measured about its run.
-struct CellRecord {
-  Cycles busy;    // tracing (corners, pixels, subdivision), all frames
-  Cycles comm;    // receiving broadcasts, and sending (waiting for the bus or a link
-                  // included)
-  Cycles finish;  // its last "done" message reached the host
-  // Antialiasing: the three phases, each from its start to its end, summed over
-  // the run's distribution units.
-  Cycles trace_corners, exchange, subdivide;
-  std::uint64_t corners_received = 0;
-  std::vector<CornerIndex> received_corners;  // ascending; only when Wiring::keep_received_corners
-  std::uint64_t pixels = 0;  // over all frames
-  std::uint64_t rays = 0;
-  OpCounts ops;        // the operations its busy time paid for, all frames
-  CostBreakdown work;  // busy, by Table 4-3's processes
-  std::vector<Cycles> frame_busy;   // per frame: the cycles it worked on it
-  std::vector<Cycles> unit_finish;  // per distribution unit: when its "done" reached the host
-  // Per frame: when it began writing the frame's pixels into video memory, in
-  // video-memory order (tracing them; antialiased, subdividing them in phase 3).
-  std::vector<Cycles> frame_write_start;
-};
 
 class Cell {
  public:

@@ -6,6 +6,7 @@
 
 #include "kernel/timeline.h"
 #include "machine/cell_grid.h"
+#include "machine/cell_record.h"
 #include "machine/corner_exchange.h"
 #include "machine/cost_profile.h"
 #include "machine/frame_work.h"
@@ -39,23 +40,6 @@ struct MachineConfig {
   // Keep every corner each cell took in (CellReport::received_corners), for
   // tests of the exchange; off, a cell keeps only their count.
   bool keep_received_corners = false;
-};
-
-struct CellReport {
-  CellId id = 0;
-  CellPosition position;
-  std::uint64_t pixels = 0;  // over all frames
-  std::uint64_t rays = 0;
-  OpCounts ops;                     // the operations its busy time paid for, all frames
-  Cycles busy, idle, comm, finish;  // idle = finish - busy - comm
-  CostBreakdown work;
-  // Antialiasing: each phase from its start to its end (the exchange includes
-  // its waits), summed over the units, and the corners it took in over the links.
-  Cycles trace_corners, exchange, subdivide;
-  std::uint64_t corners_received = 0;
-  std::vector<CornerIndex> received_corners;  // ascending; with MachineConfig::keep_received_corners
-  std::vector<Cycles> frame_busy;   // per frame: the cycles it worked on it
-  std::vector<Cycles> unit_finish;  // per unit: when its "done" reached the host
 };
 
 // One frame as the video bus showed it, in the run's screen format: floats

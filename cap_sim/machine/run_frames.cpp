@@ -263,25 +263,11 @@ void record_units(const MachineParts& m, SimulationResult& result) {
 
 // What a cell measured, as the report gives it.
 CellReport cell_report(const Cell& cell, const CellGrid& grid) {
-  const CellRecord& r = cell.record();
   CellReport c;
+  static_cast<CellRecord&>(c) = cell.record();
   c.id = cell.id();
   c.position = grid.position(c.id);
-  c.pixels = r.pixels;
-  c.rays = r.rays;
-  c.ops = r.ops;
-  c.busy = r.busy;
-  c.comm = r.comm;
-  c.finish = r.finish;
-  c.idle = r.finish - r.busy - r.comm;
-  c.work = r.work;
-  c.trace_corners = r.trace_corners;
-  c.exchange = r.exchange;
-  c.subdivide = r.subdivide;
-  c.corners_received = r.corners_received;
-  c.received_corners = r.received_corners;
-  c.frame_busy = r.frame_busy;
-  c.unit_finish = r.unit_finish;
+  c.idle = c.finish - c.busy - c.comm;
   return c;
 }
 

@@ -1,5 +1,7 @@
 #include "report/html_report.h"
 
+#include "machine/statistics.h"
+
 #include "report/heatmap.h"
 #include "report/html_assets.h"
 #include "report/page_data.h"
@@ -174,24 +176,21 @@ std::string spread_table(const SimulationResult& r) {
 std::string cell_table(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   const bool aa = r.config.aa.depth > 0;
-  std::string head =
-      "<th data-key=\"cell\">Cell</th><th data-key=\"row\">Row</th><th data-key=\"col\">Col</th>"
-      "<th data-key=\"pixels\">Pixels</th><th data-key=\"rays\">Rays</th><th data-key=\"busy_cycles\">Busy s</th>"
-      "<th data-key=\"idle_cycles\">Idle s</th><th data-key=\"comm_cycles\">Comm s</th>"
-      "<th data-key=\"finish_cycles\">Finish s</th>";
-  if (aa)
-    head +=
-        "<th data-key=\"trace_corners_cycles\">Trace corners s</th><th data-key=\"exchange_cycles\">Exchange s</th>"
-        "<th data-key=\"subdivide_cycles\">Subdivide s</th><th data-key=\"corners_received\">Corners in</th>";
+  // Every cell statistic the run kept, cycles shown in seconds.
+  auto kept = [&](const Statistic<CellReport>& s) { return s.scope == StatisticScope::Always || aa; };
+  std::string head = "<th data-key=\"cell\">Cell</th><th data-key=\"row\">Row</th><th data-key=\"col\">Col</th>";
+  for (const auto& s : kCellStatistics)
+    if (kept(s))
+      head += fmt::format("<th data-key=\"{}\">{}{}</th>", s.json_key(), s.title,
+                          s.unit == StatisticUnit::Cycles ? " s" : "");
   std::string body;
   for (const CellReport& c : r.cells) {
-    body += fmt::format("<tr data-cell=\"{}\"><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td>{}{}{}{}", c.id,
-                        c.id, c.position.row, c.position.col, grouped(c.pixels), grouped(c.rays),
-                        seconds_cell(c.busy, hz), seconds_cell(c.idle, hz), seconds_cell(c.comm, hz),
-                        seconds_cell(c.finish, hz));
-    if (aa)
-      body += fmt::format("{}{}{}<td>{}</td>", seconds_cell(c.trace_corners, hz), seconds_cell(c.exchange, hz),
-                          seconds_cell(c.subdivide, hz), grouped(c.corners_received));
+    body += fmt::format("<tr data-cell=\"{}\"><td>{}</td><td>{}</td><td>{}</td>", c.id, c.id, c.position.row,
+                        c.position.col);
+    for (const auto& s : kCellStatistics)
+      if (kept(s))
+        body += s.unit == StatisticUnit::Cycles ? seconds_cell(Cycles(s.value(c)), hz)
+                                                : fmt::format("<td>{}</td>", grouped(s.value(c)));
     body += "</tr>\n";
   }
   return fmt::format(
@@ -248,13 +247,14 @@ std::string timeline_section() {
 std::string antialiasing_section(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   const LinkTotals t = link_totals(r);
+  std::string link_heads;  // every link statistic, cycles as cycles
+  for (const auto& s : kLinkStatistics) link_heads += fmt::format("<th>{}</th>", s.title);
   std::string links;
   for (const LinkTraffic& l : r.links) {
     const CellPosition p = r.config.cells.position(l.cell);
-    links += fmt::format(
-        "<tr><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td><td>{}</td></tr>\n", p.row, p.col,
-        to_string(l.direction), grouped(l.messages), grouped(l.bytes), grouped(l.busy.count()),
-        grouped(l.max_wait.count()));
+    links += fmt::format("<tr><td>{}</td><td>{}</td><td>{}</td>", p.row, p.col, to_string(l.direction));
+    for (const auto& s : kLinkStatistics) links += fmt::format("<td>{}</td>", grouped(s.value(l)));
+    links += "</tr>\n";
   }
   return fmt::format(
       "<section id=\"antialiasing\">\n<h2>Antialiasing</h2>\n<p>Depth {}, threshold {}: each cell traces the "
@@ -268,11 +268,11 @@ std::string antialiasing_section(const SimulationResult& r) {
       "<div id=\"link-map\" class=\"link-map\"></div>\n"
       "<details><summary>Every link that carried corners ({})</summary>\n<div class=\"table-box\">"
       "<table id=\"link-table\" class=\"numbers\">\n<thead><tr><th>Row</th><th>Col</th><th>Direction</th>"
-      "<th>Messages</th><th>Bytes</th><th>Busy cycles</th><th>Longest wait</th></tr></thead>\n<tbody>\n{}"
+      "{}</tr></thead>\n<tbody>\n{}"
       "</tbody>\n</table></div>\n</details>\n</section>\n",
       r.config.aa.depth, r.config.aa.threshold, to_string(r.config.profile.link.topology), grouped(t.messages),
       grouped(t.bytes), grouped(t.hops), t.max_hops, grouped(t.busiest.count()), t.busiest.seconds(hz),
-      grouped(t.longest_wait.count()), r.links.size(), links);
+      grouped(t.longest_wait.count()), r.links.size(), link_heads, links);
 }
 
 std::string sequence_section(const SimulationResult& r) {

@@ -1,5 +1,6 @@
 #include "report/sim_report.h"
 
+#include "machine/statistics.h"
 #include "report/chrome_trace.h"
 
 #include <fmt/core.h>
@@ -47,17 +48,36 @@ std::string format_sequence(const SimulationResult& r) {
 
 namespace {
 
+// One row per cell: row, col, then the value of every cell statistic of the
+// scope (cycles as counts), and, with `seconds`, every cycles statistic again
+// in seconds.
+std::string cell_table(const SimulationResult& r, StatisticScope scope, bool seconds) {
+  const std::uint64_t hz = r.config.profile.clock_hz;
+  std::string out = fmt::format("{:>4} {:>4}", "row", "col");
+  for (const auto& s : kCellStatistics)
+    if (s.scope == scope) out += fmt::format(" {:>{}}", s.heading, s.width);
+  if (seconds)
+    for (const auto& s : kCellStatistics)
+      if (s.scope == scope && s.unit == StatisticUnit::Cycles) out += fmt::format(" {:>10}", std::string(s.name) + " s");
+  out += "\n";
+  for (const CellReport& c : r.cells) {
+    out += fmt::format("{:>4} {:>4}", c.position.row, c.position.col);
+    for (const auto& s : kCellStatistics)
+      if (s.scope == scope) out += fmt::format(" {:>{}}", s.value(c), s.width);
+    if (seconds)
+      for (const auto& s : kCellStatistics)
+        if (s.scope == scope && s.unit == StatisticUnit::Cycles)
+          out += fmt::format(" {:>10.3f}", Cycles(s.value(c)).seconds(hz));
+    out += "\n";
+  }
+  return out;
+}
+
 std::string format_antialiasing(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
-  std::string out = fmt::format(
-      "\nantialiasing: depth {}, threshold {}, links: {}\n"
-      "{:>4} {:>4} {:>16} {:>14} {:>14} {:>9}\n",
-      r.config.aa.depth, r.config.aa.threshold, to_string(r.config.profile.link.topology), "row",
-      "col", "trace corners", "exchange", "subdivide", "corners in");
-  for (const CellReport& c : r.cells)
-    out += fmt::format("{:>4} {:>4} {:>16} {:>14} {:>14} {:>9}\n", c.position.row, c.position.col,
-                       c.trace_corners.count(), c.exchange.count(), c.subdivide.count(),
-                       c.corners_received);
+  std::string out = fmt::format("\nantialiasing: depth {}, threshold {}, links: {}\n", r.config.aa.depth,
+                                r.config.aa.threshold, to_string(r.config.profile.link.topology));
+  out += cell_table(r, StatisticScope::Antialiased, false);
   const LinkTotals t = link_totals(r);
   out += fmt::format(
       "link traffic: {} messages, {} bytes, {} hops (at most {} for one message) over {} links\n"
@@ -78,15 +98,7 @@ std::string format_report(const SimulationResult& r) {
   out += fmt::format("data broadcast: program {} B, scene {} B, voxel data {} B\n\n",
                      r.config.profile.program_bytes, r.footprint.scene_bytes(),
                      r.footprint.voxel_bytes());
-  out += fmt::format("{:>4} {:>4} {:>8} {:>9} {:>14} {:>14} {:>12} {:>14} {:>10} {:>10} {:>10} {:>10}\n",
-                     "row", "col", "pixels", "rays", "busy cyc", "idle cyc", "comm cyc",
-                     "finish cyc", "busy s", "idle s", "comm s", "finish s");
-  for (const CellReport& c : r.cells)
-    out += fmt::format(
-        "{:>4} {:>4} {:>8} {:>9} {:>14} {:>14} {:>12} {:>14} {:>10.3f} {:>10.3f} {:>10.3f} {:>10.3f}\n",
-        c.position.row, c.position.col, c.pixels, c.rays, c.busy.count(), c.idle.count(),
-        c.comm.count(), c.finish.count(), c.busy.seconds(hz), c.idle.seconds(hz),
-        c.comm.seconds(hz), c.finish.seconds(hz));
+  out += cell_table(r, StatisticScope::Always, true);
 
   const LoadSpread s = load_spread(r);
   out += fmt::format("\nMax {:.3f} s   Min {:.3f} s   d = (Max - Min) / Max = {:.2f} %\n",
@@ -114,24 +126,15 @@ void add_antialiasing(nlohmann::json& report, const SimulationResult& r) {
                             {"threshold", r.config.aa.threshold},
                             {"link_topology", to_string(r.config.profile.link.topology)},
                             {"sample_bytes", kScreenSampleBytes}};
-  for (std::size_t i = 0; i < r.cells.size(); ++i) {
-    const CellReport& c = r.cells[i];
-    json& cell = report["cells"][i];
-    cell["trace_corners_cycles"] = c.trace_corners.count();
-    cell["exchange_cycles"] = c.exchange.count();
-    cell["subdivide_cycles"] = c.subdivide.count();
-    cell["corners_received"] = c.corners_received;
-  }
+  for (std::size_t i = 0; i < r.cells.size(); ++i)
+    for (const auto& s : kCellStatistics)
+      if (s.scope == StatisticScope::Antialiased) report["cells"][i][s.json_key()] = s.value(r.cells[i]);
   json links = json::array();
   for (const LinkTraffic& l : r.links) {
     const CellPosition p = r.config.cells.position(l.cell);
-    links.push_back({{"row", p.row},
-                     {"col", p.col},
-                     {"direction", to_string(l.direction)},
-                     {"messages", l.messages},
-                     {"bytes", l.bytes},
-                     {"busy_cycles", l.busy.count()},
-                     {"max_wait_cycles", l.max_wait.count()}});
+    json link = {{"row", p.row}, {"col", p.col}, {"direction", to_string(l.direction)}};
+    for (const auto& s : kLinkStatistics) link[s.json_key()] = s.value(l);
+    links.push_back(link);
   }
   const LinkTotals t = link_totals(r);
   report["links"] = links;
@@ -192,15 +195,12 @@ nlohmann::json report_json(const SimulationResult& r) {
   using nlohmann::json;
   const std::uint64_t hz = r.config.profile.clock_hz;
   json cells = json::array();
-  for (const CellReport& c : r.cells)
-    cells.push_back({{"row", c.position.row},
-                     {"col", c.position.col},
-                     {"pixels", c.pixels},
-                     {"rays", c.rays},
-                     {"busy_cycles", c.busy.count()},
-                     {"idle_cycles", c.idle.count()},
-                     {"comm_cycles", c.comm.count()},
-                     {"finish_cycles", c.finish.count()}});
+  for (const CellReport& c : r.cells) {
+    json cell = {{"row", c.position.row}, {"col", c.position.col}};
+    for (const auto& s : kCellStatistics)
+      if (s.scope == StatisticScope::Always) cell[s.json_key()] = s.value(c);
+    cells.push_back(cell);
+  }
   json breakdown = json::object();
   json breakdown_cycles = json::object();
   for (const CostCategoryInfo& c : kCostCategoryTable) {

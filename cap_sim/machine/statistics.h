@@ -1,0 +1,79 @@
+#pragma once
+// The statistics a run keeps of each cell and each link direction, each
+// declared once: its name, its unit, what it measures, and the headings of
+// the text and HTML tables. The text report, the JSON report and the HTML
+// page write every statistic of a table from these declarations, in their
+// order; adding one is a row here (and the counter it reads).
+
+#include "machine/cell_record.h"
+#include "machine/neighbour_links.h"
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace capsim::sim {
+
+enum class StatisticUnit {
+  Count,   // written as is
+  Bytes,   // written as is
+  Cycles,  // of the profile's clock; JSON "<name>_cycles"; seconds where a table says so
+};
+
+// When a statistic is kept: always, or only when the run antialiases.
+enum class StatisticScope { Always, Antialiased };
+
+template <class Part>
+struct Statistic {
+  const char* name;     // "busy"; its JSON key is json_key()
+  StatisticUnit unit;
+  StatisticScope scope;
+  const char* meaning;  // one line, for the documentation and the page's captions
+  const char* heading;  // the text table's column: "busy cyc"
+  int width;            // and its width
+  const char* title;    // the HTML table's column: "Busy" (with " s" for cycles, shown in seconds)
+  std::uint64_t (*value)(const Part& part);
+
+  std::string json_key() const { return unit == StatisticUnit::Cycles ? std::string(name) + "_cycles" : name; }
+};
+
+inline constexpr std::array<Statistic<CellReport>, 10> kCellStatistics = {{
+    {"pixels", StatisticUnit::Count, StatisticScope::Always, "pixels it traced, all frames", "pixels", 8,
+     "Pixels", [](const CellReport& c) { return c.pixels; }},
+    {"rays", StatisticUnit::Count, StatisticScope::Always, "rays it traced, every kind", "rays", 9, "Rays",
+     [](const CellReport& c) { return c.rays; }},
+    {"busy", StatisticUnit::Cycles, StatisticScope::Always, "tracing: its operations' costs", "busy cyc", 14,
+     "Busy", [](const CellReport& c) { return c.busy.count(); }},
+    {"idle", StatisticUnit::Cycles, StatisticScope::Always, "finish - busy - comm: waiting", "idle cyc", 14,
+     "Idle", [](const CellReport& c) { return c.idle.count(); }},
+    {"comm", StatisticUnit::Cycles, StatisticScope::Always,
+     "receiving broadcasts and sending, waits for the bus or a link included", "comm cyc", 12, "Comm",
+     [](const CellReport& c) { return c.comm.count(); }},
+    {"finish", StatisticUnit::Cycles, StatisticScope::Always, "when its last \"done\" reached the host",
+     "finish cyc", 14, "Finish", [](const CellReport& c) { return c.finish.count(); }},
+    {"trace_corners", StatisticUnit::Cycles, StatisticScope::Antialiased,
+     "phase 1, tracing the corners it owns, start to end", "trace corners", 16, "Trace corners",
+     [](const CellReport& c) { return c.trace_corners.count(); }},
+    {"exchange", StatisticUnit::Cycles, StatisticScope::Antialiased,
+     "phase 2, the corner exchange, start to end, waits included", "exchange", 14, "Exchange",
+     [](const CellReport& c) { return c.exchange.count(); }},
+    {"subdivide", StatisticUnit::Cycles, StatisticScope::Antialiased, "phase 3, subdividing its pixels",
+     "subdivide", 14, "Subdivide", [](const CellReport& c) { return c.subdivide.count(); }},
+    {"corners_received", StatisticUnit::Count, StatisticScope::Antialiased,
+     "corner samples it took in over the links", "corners in", 9, "Corners in",
+     [](const CellReport& c) { return c.corners_received; }},
+}};
+
+inline constexpr std::array<Statistic<LinkTraffic>, 4> kLinkStatistics = {{
+    {"messages", StatisticUnit::Count, StatisticScope::Antialiased, "messages it carried", "messages", 9,
+     "Messages", [](const LinkTraffic& l) { return l.messages; }},
+    {"bytes", StatisticUnit::Bytes, StatisticScope::Antialiased, "bytes it carried", "bytes", 12, "Bytes",
+     [](const LinkTraffic& l) { return l.bytes; }},
+    {"busy", StatisticUnit::Cycles, StatisticScope::Antialiased, "cycles bits were on it", "busy cyc", 12,
+     "Busy cycles", [](const LinkTraffic& l) { return l.busy.count(); }},
+    {"max_wait", StatisticUnit::Cycles, StatisticScope::Antialiased,
+     "the longest a message waited for it to be free", "max wait cyc", 12, "Longest wait",
+     [](const LinkTraffic& l) { return l.max_wait.count(); }},
+}};
+
+}  // namespace capsim::sim
