@@ -15,7 +15,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <ranges>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,11 +29,30 @@ struct FrameWork {
   std::vector<TracedCell> cells;
 };
 
+// The numbers first, first + 1, ..., past_last - 1 in a range-for. (Written out
+// rather than std::views::iota: clang 14 cannot compile libstdc++ 12's
+// ranges, and the sanitizer and fuzz builds use clang.)
+struct FrameNumbers {
+  struct iterator {
+    int frame;
+    int operator*() const { return frame; }
+    iterator& operator++() {
+      ++frame;
+      return *this;
+    }
+    bool operator!=(const iterator& other) const { return frame != other.frame; }
+  };
+  int first = 0;
+  int past_last = 0;
+  iterator begin() const { return {first}; }
+  iterator end() const { return {past_last}; }
+};
+
 struct DistributionUnit {
   int first_frame = 0;
   int frames = 1;
   // The run's numbers of the unit's frames, in order.
-  auto frame_numbers() const { return std::views::iota(first_frame, first_frame + frames); }
+  FrameNumbers frame_numbers() const { return {first_frame, first_frame + frames}; }
   // Antialiasing: the corner exchange of all the unit's frames at once. It is
   // planned as the unit starts and dropped once every cell has finished it
   // (the cells have taken in all its messages by then), so that a run holds
