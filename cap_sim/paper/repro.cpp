@@ -134,9 +134,9 @@ Table45 run_table_4_5(const ReproOptions& o) {
   if (t.frames <= 0) return t;
   std::vector<PreparedScene> scenes;
   scenes.reserve(t.frames);
-  PrepareOptions prep;
-  prep.width = o.width;
-  prep.height = o.height;
+  PrepareOptions prep;  // DISB's own screen, whatever the other experiments' (scenes/disb.scad)
+  prep.width = kDisbSide;
+  prep.height = kDisbSide;
   for (int f = 0; f < t.frames; ++f)
     scenes.push_back(prepare_scene(parse_scene_file(fmt::format("{}/disb/f{:05}.csg", o.scenes_dir, f)), prep));
   frame_sequence(scenes);  // one camera for the whole sequence, as `capsim simulate` gives it
@@ -160,10 +160,8 @@ Table45 run_table_4_5(const ReproOptions& o) {
     SimulateSettings run;
     run.scenes = {disb_files(o.scenes_dir, t.frames)};
     run.output = "disb.png";
-    if (!(o.width == 512 && o.height == 512)) {  // DISB gives 512x512 by default
-      run.width = o.width;
-      run.height = o.height;
-    }
+    run.width = kDisbSide;
+    run.height = kDisbSide;
     run.aa.depth = config.aa.depth;
     run.frame_average = config.frame_average;
     t.runs[i].command = simulate_command(run, CommandForm::NonDefaults);

@@ -13,8 +13,12 @@
 
 namespace capsim::sim {
 
+// Table 4-5's screen: DISB is laid out for 384 x 384 (scenes/disb.scad puts its
+// edges on chosen pixel rows and columns), so its runs use it at any --size.
+inline constexpr int kDisbSide = 384;
+
 struct ReproOptions {
-  int width = 512, height = 512;  // every experiment's screen
+  int width = 512, height = 512;  // every experiment's screen but Table 4-5's (kDisbSide)
   int threads = 0;                // host threads; the figures do not depend on them
   std::string scenes_dir = "scenes";
   int table_4_5_frames = 64;  // DISB frames run for Table 4-5 (0: not run)

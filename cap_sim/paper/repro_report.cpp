@@ -426,11 +426,12 @@ void table_4_5_section(std::string& md, const ReproResult& r) {
     return;
   }
   md += fmt::format(
-      "`scenes/disb/f00000.csg` to `f{:05}.csg` ({} frames), 8 x 8 cells, dot mode, `cap` profile, {} pixels; "
+      "`scenes/disb/f00000.csg` to `f{:05}.csg` ({} frames), 8 x 8 cells, dot mode, `cap` profile, {} pixels "
+      "(the screen DISB is laid out for, whatever the other tables' size); "
       "antialiasing depth 2; frame averaged: the frames go out in groups of 64, each frame with its own dot "
       "shift ([animation.md](animation.md)). Max deviation: the largest d over the frames (over the groups "
       "when frame averaged).\n\n",
-      t.frames - 1, t.frames, size_text(r.options));
+      t.frames - 1, t.frames, fmt::format("{0} x {0}", kDisbSide));
   md += "| processing | time: ours | paper | ours / paper | max deviation: ours | paper |\n";
   md += "|---|---|---|---|---|---|\n";
   for (int i = 0; i < 3; ++i) {
