@@ -1,4 +1,6 @@
-// `capsim simulate`: the CAP machine running the tracer, cycle by cycle.
+// `capsim simulate`: the CAP machine running the tracer. The model charges each
+// operation's cost in integer cycles of the cell's clock inside an
+// event-driven machine.
 
 #include "capsim/progress.h"
 #include "cli/cli_commands.h"
