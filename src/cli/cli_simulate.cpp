@@ -73,6 +73,18 @@ bool is_readable_file(const std::string& path) {
   return std::filesystem::is_regular_file(path, ec) && std::ifstream(path);
 }
 
+// The costs that rounding to whole cycles of the profile's clock moved by more
+// than 1 %: the run charges the rounded cycles, so each is named on stderr (a
+// 1 kHz clock makes CSG free).
+void warn_of_rounding(const sim::CostProfile& p) {
+  for (const sim::ProfileTime& t : p.rounding())
+    fmt::print(stderr,
+               "capsim: warning: cost profile {}: {} = {} us becomes {} cycles at clock_hz {} ({:.4g} exactly, "
+               "{:.1f} % off); the run charges {} cycles\n",
+               p.source, t.key, t.us, t.cycles.count(), p.clock_hz, t.exact_cycles, 100 * t.rounding_error(),
+               t.cycles.count());
+}
+
 sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
   sim::MachineConfig config;
   const auto [rows, cols] = pair_value(checked(o.cells));
@@ -154,6 +166,7 @@ Command add_simulate_command(CLI::App& app) {
       staged.push_back(o);
     StagedOutputs outputs(staged, inputs);
     config.profile = sim::load_cost_profile(sim->profile.text);
+    warn_of_rounding(config.profile);
     config.completion_cycles = !sim->html.empty();
 
     const auto started = std::chrono::steady_clock::now();
