@@ -32,7 +32,46 @@ void finish(std::vector<std::vector<CornerMessage>>& sends, std::vector<int>& re
   }
 }
 
+// Calls need(x, y, owner, needer) for every corner (x, y) of a frame and every
+// cell other than the corner's owner that needs it: the cells of the pixels
+// whose right, lower or lower-right corner it is. Corner by corner, in
+// ascending order, and for each corner its needers in ascending order, each
+// once, so that lists built from the calls come out ascending with no sort.
+template <class Need>
+void for_each_need(const WindowLayout& layout, Need need) {
+  const int width = layout.width(), height = layout.height();
+  const OwnerTable owners(layout);
+  auto pixel_owner = [&](int x, int y) { return owners.owner(x, y).cell; };
+  for (int y = 0; y <= height; ++y)
+    for (int x = 0; x <= width; ++x) {
+      const CornerPixel p = corner_pixel(x, y, width, height);
+      const CellId o = pixel_owner(p.x, p.y);
+      CellId needers[3];
+      int count = 0;
+      auto add_needer = [&](int px, int py) {
+        if (px < 0 || py < 0 || px >= width || py >= height) return;
+        const CellId n = pixel_owner(px, py);
+        if (n == o || std::find(needers, needers + count, n) != needers + count) return;
+        needers[count++] = n;
+      };
+      add_needer(x - 1, y - 1);
+      add_needer(x, y - 1);
+      add_needer(x - 1, y);
+      // In ascending order, by insertion: at most three. (std::sort here makes
+      // GCC 12 warn of subscripts past the array it cannot bound.)
+      for (int i = 1; i < count; ++i)
+        for (int j = i; j > 0 && needers[j] < needers[j - 1]; --j) std::swap(needers[j], needers[j - 1]);
+      for (int i = 0; i < count; ++i) need(x, y, o, needers[i]);
+    }
+}
+
 }  // namespace
+
+std::vector<std::uint64_t> corners_needed(const WindowLayout& layout) {
+  std::vector<std::uint64_t> out(static_cast<std::size_t>(layout.grid().cell_count()), 0);
+  for_each_need(layout, [&](int, int, CellId, CellId n) { ++out[n]; });
+  return out;
+}
 
 CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int first_frame)
     : frames_(std::move(frames)),
@@ -45,43 +84,17 @@ CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int firs
   needs_.resize(cells);
   vertical_.resize(cells);
   horizontal_.resize(cells);
-  // Corner by corner, in ascending order, so every list comes out ascending
-  // with no sort: the cells that need a corner are those of the pixels whose
-  // right, lower or lower-right corner it is, other than its owner's.
   for (std::size_t f = 0; f < frames_.size(); ++f) {
     const WindowLayout& layout = *frames_[f];
     if (layout.width() != width_ || layout.height() != height_ || !(layout.grid() == grid))
       throw std::logic_error("the frames of one exchange need one screen size and cell grid");
-    const OwnerTable owners(layout);
-    auto pixel_owner = [&](int x, int y) { return owners.owner(x, y).cell; };
-    for (int y = 0; y <= height_; ++y)
-      for (int x = 0; x <= width_; ++x) {
-        const CornerIndex c = index(first_frame_ + static_cast<int>(f), x, y);
-        const CornerPixel p = corner_pixel(x, y, width_, height_);
-        const CellId o = pixel_owner(p.x, p.y);
-        CellId needers[3];
-        int count = 0;
-        auto need = [&](int px, int py) {
-          if (px < 0 || py < 0 || px >= width_ || py >= height_) return;
-          const CellId n = pixel_owner(px, py);
-          if (n == o || std::find(needers, needers + count, n) != needers + count) return;
-          needers[count++] = n;
-        };
-        need(x - 1, y - 1);
-        need(x, y - 1);
-        need(x - 1, y);
-        // In ascending order, by insertion: at most three. (std::sort here makes
-        // GCC 12 warn of subscripts past the array it cannot bound.)
-        for (int i = 1; i < count; ++i)
-          for (int j = i; j > 0 && needers[j] < needers[j - 1]; --j) std::swap(needers[j], needers[j - 1]);
-        for (int i = 0; i < count; ++i) {
-          const CellId n = needers[i];
-          needs_[n].push_back(c);
-          const CellId m = grid.id({grid.position(n).row, grid.position(o).col});
-          if (m != o) add(vertical_, o, m, c);
-          if (m != n) add(horizontal_, m, n, c);
-        }
-      }
+    for_each_need(layout, [&](int x, int y, CellId o, CellId n) {
+      const CornerIndex c = index(first_frame_ + static_cast<int>(f), x, y);
+      needs_[n].push_back(c);
+      const CellId m = grid.id({grid.position(n).row, grid.position(o).col});
+      if (m != o) add(vertical_, o, m, c);
+      if (m != n) add(horizontal_, m, n, c);
+    });
   }
   finish(vertical_, vertical_in_);
   finish(horizontal_, horizontal_in_);

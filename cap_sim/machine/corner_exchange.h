@@ -81,4 +81,8 @@ class CornerExchange {
   std::vector<int> vertical_in_, horizontal_in_;
 };
 
+// Per cell, how many corners of one frame it needs from other cells: the size
+// of CornerExchange(layout).needs(cell), counted without planning messages.
+std::vector<std::uint64_t> corners_needed(const WindowLayout& layout);
+
 }  // namespace capsim::sim

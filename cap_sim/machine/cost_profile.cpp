@@ -45,8 +45,9 @@ class ObjectReader {
   }
 
   // A time in microseconds ("..._us") as whole cycles at clock_hz, rounded to
-  // nearest; refused when a 64-bit cycle count cannot hold it.
-  Cycles cycles(const std::string& key, std::uint64_t clock_hz) {
+  // nearest, and recorded in `times`; refused when a 64-bit cycle count
+  // cannot hold it.
+  Cycles cycles(const std::string& key, std::uint64_t clock_hz, std::vector<ProfileTime>& times) {
     const double us = number(key, 0);
     const double hz = static_cast<double>(clock_hz);
     const double cycles = std::round(us * hz / 1e6);
@@ -54,7 +55,8 @@ class ObjectReader {
       fail(where(key), fmt::format("= {} us is {:.4g} cycles at clock_hz {}, more than a 64-bit "
                                    "cycle count holds ({} cycles, {:.6g} us at this clock)",
                                    us, cycles, clock_hz, Cycles::kMax, kTwoTo64 / hz * 1e6));
-    return Cycles(static_cast<std::uint64_t>(cycles));
+    times.push_back({where(key), us, Cycles(static_cast<std::uint64_t>(cycles)), us * hz / 1e6});
+    return times.back().cycles;
   }
 
   std::uint64_t count(const std::string& key) {
@@ -124,6 +126,18 @@ Cycles category_cycles(CostCategory category, Terms terms) {
 
 }  // namespace
 
+double ProfileTime::rounding_error() const {
+  if (exact_cycles == 0) return 0;
+  return std::abs(static_cast<double>(cycles.count()) - exact_cycles) / exact_cycles;
+}
+
+std::vector<ProfileTime> CostProfile::rounding(double tolerance) const {
+  std::vector<ProfileTime> out;
+  for (const ProfileTime& t : times)
+    if (t.rounding_error() > tolerance) out.push_back(t);
+  return out;
+}
+
 Cycles CostProfile::bus_data_cycles(std::uint64_t bytes) const {
   const std::optional<std::uint64_t> c = ceil_mul_div(bytes, clock_hz, bus.bytes_per_second);
   if (!c)
@@ -164,19 +178,19 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
     const char* section = profile_section(payer);
     ObjectReader costs(top.member(section), section, source);
     for (const CostTermInfo& t : kCostTerms)
-      if (t.payer == payer) p.costs[t.term] = costs.cycles(t.key, hz);
+      if (t.payer == payer) p.costs[t.term] = costs.cycles(t.key, hz, p.times);
     costs.refuse_unknown_keys();
   }
 
   ObjectReader bus(top.member("bus"), "bus", source);
   p.bus.bytes_per_second = bus.count("bytes_per_second");
-  p.bus.arbitration = bus.cycles("arbitration_us", hz);
-  p.bus.latency = bus.cycles("latency_us", hz);
+  p.bus.arbitration = bus.cycles("arbitration_us", hz, p.times);
+  p.bus.latency = bus.cycles("latency_us", hz, p.times);
   bus.refuse_unknown_keys();
 
   ObjectReader link(top.member("link"), "link", source);
   p.link.bits_per_second = link.count("bits_per_second");
-  p.link.latency = link.cycles("latency_us", hz);
+  p.link.latency = link.cycles("latency_us", hz, p.times);
   const std::string topology = link.text("topology");
   const std::optional<LinkTopology> t = parse_link_topology(topology);
   if (!t) link.fail(link.where("topology"), fmt::format("'{}' must be \"mesh\" or \"torus\"", topology));
@@ -185,6 +199,7 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
 
   p.cell_memory_bytes = top.count("cell_memory_bytes");
   p.program_bytes = top.count("program_bytes");
+  p.video_memory_bytes = top.count("video_memory_bytes");
   if (p.program_bytes > p.cell_memory_bytes)
     top.fail("program_bytes", fmt::format("({}) must not exceed cell_memory_bytes ({})",
                                           p.program_bytes, p.cell_memory_bytes));

@@ -40,6 +40,19 @@ struct LinkCosts {
   LinkTopology topology = LinkTopology::Mesh;
 };
 
+// A time the profile file gave in microseconds, and the whole cycles of the
+// clock it became.
+struct ProfileTime {
+  std::string key;  // where in the file: "cell_costs_us.tree_visit"
+  double us = 0;
+  Cycles cycles;
+  // us x clock_hz / 1e6, before rounding.
+  double exact_cycles = 0;
+  // How far rounding moved it, as a fraction of the exact cycles: 0 for a
+  // time of 0, 1 for a time that became 0 cycles.
+  double rounding_error() const;
+};
+
 struct CostProfile {
   std::string name;
   std::string description;
@@ -48,8 +61,17 @@ struct CostProfile {
   CostTable costs;  // every term of kCostTerms, cell's and host's
   BusCosts bus;
   LinkCosts link;
-  std::uint64_t cell_memory_bytes = 0;  // program + scene + voxel data must fit
+  std::uint64_t cell_memory_bytes = 0;   // program + a unit's scene and voxel data must fit
+  std::uint64_t video_memory_bytes = 0;  // a unit's pixels (and corner samples) must fit
   std::uint64_t program_bytes = 0;      // the tracer program every cell holds
+  // Every time read from the file, in the file's order (empty for a profile
+  // built in code).
+  std::vector<ProfileTime> times;
+
+  // The times whose rounding to whole cycles moved them by more than
+  // `tolerance` (a fraction; 0.01 is 1 %): at a slow clock, a cost of a few
+  // microseconds may become 0 cycles (free) or twice itself.
+  std::vector<ProfileTime> rounding(double tolerance = 0.01) const;
 
   // Cycles to move `bytes` at the bus's and a link's rate (rounded up). Throw
   // CycleOverflow, naming the rate's field, beyond 2^64 - 1 cycles.

@@ -3,8 +3,9 @@
 // it out: a run is a sequence of frames, distributed in units. Without frame
 // averaging a unit is one frame and the host starts the next unit when every
 // cell has finished this one (the display shows whole frames). With frame
-// averaging (dot mode) a unit is a group of R x C frames, each with its own dot
-// shift; the cells run through the group's frames without waiting for each
+// averaging (dot mode) a unit is a group of frames (as many as a cell's memory
+// and video memory hold, at most R x C; machine/unit_memory.h), each with its
+// own dot shift; the cells run through the group's frames without waiting for each
 // other, and the host collects the group.
 
 #include "kernel/cycles.h"
@@ -56,10 +57,8 @@ struct DistributionUnit {
   // Antialiasing: the corner exchange of all the unit's frames at once. It is
   // planned as the unit starts and dropped once every cell has finished it
   // (the cells have taken in all its messages by then), so that a run holds
-  // one unit's plan at a time; corners_needed keeps what the report needs of
-  // it: per cell, how many corners it took in from other cells.
+  // one unit's plan at a time.
   std::unique_ptr<CornerExchange> exchange;
-  std::vector<std::uint64_t> corners_needed;
 };
 
 // A timeline span's name for work on one frame: `what`, with the frame's

@@ -1,5 +1,7 @@
 #include "machine/machine.h"
 
+#include "machine/unit_memory.h"
+
 #include "capsim/host_threads.h"
 #include "capsim/image_io.h"
 #include "capsim/progress.h"
@@ -11,18 +13,6 @@
 #include <stdexcept>
 
 namespace capsim::sim {
-
-void check_cell_memory(const SceneFootprint& f, const CostProfile& profile) {
-  // 128 bits: the sum of three 64-bit sizes cannot wrap.
-  const unsigned __int128 needed = static_cast<unsigned __int128>(profile.program_bytes) +
-                                   f.scene_bytes() + f.voxel_bytes();
-  if (needed > profile.cell_memory_bytes)
-    throw std::runtime_error(fmt::format(
-        "the scene does not fit a cell's memory: it needs {} bytes (program {} + scene {} + voxel "
-        "data {}) but a cell of profile '{}' has {} bytes; try a coarser --grid",
-        needed, profile.program_bytes, f.scene_bytes(), f.voxel_bytes(), profile.name,
-        profile.cell_memory_bytes));
-}
 
 FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
                      const CostProfile& profile) {
@@ -56,7 +46,7 @@ std::uint64_t simulation_memory(const MachineConfig& config, int width, int heig
     // corners needed from other cells per pixel of its frames, each kept as a
     // need and in at most two messages (4 bytes each); and, when kept, every
     // corner a cell took in (4 bytes).
-    const std::uint64_t unit = config.frame_average ? std::min<std::uint64_t>(frames, config.cells.cell_count()) : 1;
+    const std::uint64_t unit = std::min<std::uint64_t>(frames, unit_frames(config));
     bytes += unit * pixels * 3 * (4 + 4 + 4);
     if (config.keep_received_corners) bytes += static_cast<std::uint64_t>(frames) * pixels * 3 * 4;
   }
@@ -85,7 +75,8 @@ std::uint64_t simulation_memory_until_written(const MachineConfig& config, int w
 
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame) {
   return WindowLayout(config.mode, config.cells, width, height,
-                      config.frame_average ? dot_shift_for_frame(config.cells, frame) : DotShift{});
+                      config.frame_average ? dot_shift_for_frame(config.cells, frame % unit_frames(config))
+                                           : DotShift{});
 }
 
 SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
@@ -105,10 +96,15 @@ SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const
   if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
   if (config.frame_average && config.mode != PixelMode::Dot)
     throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
-  // Refuse a scene that does not fit before spending time tracing it.
-  for (const Tracer* t : frames) check_cell_memory(scene_footprint(t->scene()), config.profile);
+  // Refuse a unit that does not fit before spending time tracing it; frame
+  // averaged, the units' size decides the frames' dot shifts, so it is
+  // resolved first.
+  std::vector<SceneFootprint> footprints;
+  for (const Tracer* t : frames) footprints.push_back(scene_footprint(t->scene()));
+  const Camera& cam = frames[0]->scene().camera;
+  const MachineConfig resolved = resolve_units(footprints, config, cam.width, cam.height);
   try {
-    return trace_and_run(frames, config, threads, show_progress);
+    return trace_and_run(frames, resolved, threads, show_progress);
   } catch (const CycleOverflow& e) {
     // The scenes are valid; the profile's costs make their time too long to count.
     const CostProfile& profile = config.profile;

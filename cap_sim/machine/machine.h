@@ -31,9 +31,14 @@ struct MachineConfig {
   AntialiasOptions aa;  // depth 0: one sample per pixel, no exchange
   ScreenFormat screen = ScreenFormat::Float;
   // Frame-averaged distribution (dot mode only): frames go out in groups of
-  // R x C, each frame with its own dot shift (dot_shift_for_frame), and the
-  // cells run through a group without waiting for each other.
+  // frame_average_group frames, frame k of a group with the dot shift
+  // dot_shift_for_frame(grid, k), and the cells run through a group without
+  // waiting for each other.
   bool frame_average = false;
+  // 0 until the machine resolves it: then as many frames as a cell's memory
+  // and video memory hold, at most R x C (frames_per_unit,
+  // machine/unit_memory.h). The result's config holds the resolved value.
+  int frame_average_group = 0;
   // Keep when every pixel reached video memory (FrameScreen::completion_cycles);
   // off, a run keeps no per-pixel figures it does not need.
   bool completion_cycles = false;
@@ -64,14 +69,12 @@ struct UnitTimes {
   int first_frame = 0;
   int frames = 1;
   Cycles start, end;
-  // The most video memory one cell needs for the unit: every frame of the unit
-  // stays in video memory until the unit is collected, kVideoPixelBytes a
-  // pixel; antialiased, also the corner samples it traced and took in
-  // (kScreenSampleBytes each).
+  // What a cell held for the unit (machine/unit_memory.h): its memory
+  // (program, and every frame's scene and voxel data) and the most video
+  // memory one cell needed.
+  std::uint64_t cell_memory_bytes = 0;
   std::uint64_t video_memory_bytes = 0;
 };
-
-inline constexpr std::uint64_t kVideoPixelBytes = 3;  // 8-bit R, G, B
 
 // The command bus over a run: every transfer (broadcasts and messages).
 struct BusTotals {
@@ -97,18 +100,16 @@ struct SimulationResult {
   std::uint64_t events = 0;  // events the kernel ran
 };
 
-// Program + scene + voxel data must fit a cell's memory. Throws std::runtime_error
-// naming the needed and the available bytes.
-void check_cell_memory(const SceneFootprint& footprint, const CostProfile& profile);
-
 // The work of one frame, traced ahead: precondition: traced came from
 // trace_cells on `scene` with `layout` and the profile's cell costs.
 FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
                      const CostProfile& profile);
 
-// Runs the frames on the machine, in the units config asks for. Precondition:
-// the frames share one screen size; their layouts have config's mode and grid
-// (and, frame averaged, frame f the shift dot_shift_for_frame(grid, f)).
+// Runs the frames on the machine, in the units config asks for (an unresolved
+// frame_average_group resolved by frames_per_unit). Precondition: the frames
+// share one screen size; their layouts are frame_layout's with the resolved
+// config. Throws std::runtime_error, naming the unit, when a unit does not fit
+// a cell's memory or video memory (check_unit_memory).
 SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& config);
 
 // One frame traced ahead, as run_frames.
@@ -132,7 +133,8 @@ std::uint64_t simulation_result_memory(const MachineConfig& config, int width, i
 // cycles and, antialiased, its samples into channels, then makes planes of all.
 std::uint64_t simulation_memory_until_written(const MachineConfig& config, int width, int height, int frames);
 
-// The window layout of frame f of a run.
+// The window layout of frame f of a run: frame averaged, frame k of its unit
+// (k = f mod unit_frames(config)) takes dot_shift_for_frame(grid, k).
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame);
 
 // trace_cells for every frame + run_frames. threads: 0 = all hardware threads;

@@ -4,20 +4,6 @@
 
 namespace capsim::sim {
 
-LoadSpread load_spread(const SimulationResult& r) {
-  LoadSpread s;
-  if (r.cells.empty()) return s;
-  const auto [lo, hi] = std::minmax_element(
-      r.cells.begin(), r.cells.end(),
-      [](const CellReport& a, const CellReport& b) { return a.finish < b.finish; });
-  s.min_finish = lo->finish;
-  s.max_finish = hi->finish;
-  if (s.max_finish.count() > 0)
-    s.deviation_percent = 100.0 * static_cast<double>((s.max_finish - s.min_finish).count()) /
-                          static_cast<double>(s.max_finish.count());
-  return s;
-}
-
 namespace {
 
 LoadSpread spread_of(const std::vector<Cycles>& times) {
@@ -33,6 +19,27 @@ LoadSpread spread_of(const std::vector<Cycles>& times) {
 }
 
 }  // namespace
+
+LoadSpread load_spread(const SimulationResult& r) {
+  std::vector<Cycles> times;
+  for (const CellReport& c : r.cells) times.push_back(c.finish);
+  return spread_of(times);
+}
+
+LoadSpread busy_spread(const SimulationResult& r) {
+  std::vector<Cycles> times;
+  for (const CellReport& c : r.cells) times.push_back(c.busy);
+  return spread_of(times);
+}
+
+UnitMemoryPeak unit_memory_peak(const SimulationResult& r) {
+  UnitMemoryPeak peak;
+  for (const UnitTimes& u : r.units) {
+    peak.cell_memory_bytes = std::max(peak.cell_memory_bytes, u.cell_memory_bytes);
+    peak.video_memory_bytes = std::max(peak.video_memory_bytes, u.video_memory_bytes);
+  }
+  return peak;
+}
 
 std::vector<LoadSpread> unit_spreads(const SimulationResult& r) {
   std::vector<LoadSpread> out;

@@ -15,6 +15,15 @@ struct LoadSpread {
   double deviation_percent = 0;  // (max - min) / max x 100; 0 if max is 0
 };
 LoadSpread load_spread(const SimulationResult& r);
+// The same over the cells' busy cycles only: the cycles each computed, without
+// the host's prefix (voxel generation, broadcasts) and the waits that every
+// cell's finish time includes, so that d compares the cells' work alone.
+LoadSpread busy_spread(const SimulationResult& r);
+// The peak over the run's units of what one cell held (UnitTimes).
+struct UnitMemoryPeak {
+  std::uint64_t cell_memory_bytes = 0, video_memory_bytes = 0;
+};
+UnitMemoryPeak unit_memory_peak(const SimulationResult& r);
 
 // A run of several frames (docs/animation.md). Per frame: Max, Min and d of the
 // cells' time on it. With a barrier after each frame that is, as in Table 4-4,

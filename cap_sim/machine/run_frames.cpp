@@ -4,6 +4,7 @@
 #include "machine/cell.h"
 #include "machine/command_bus.h"
 #include "machine/host.h"
+#include "machine/unit_memory.h"
 #include "machine/video_bus.h"
 
 #include <fmt/core.h>
@@ -27,7 +28,7 @@ std::string sender_name(Endpoint e, const CellGrid& grid) {
 std::vector<DistributionUnit> distribution_units(const std::vector<FrameWork>& frames,
                                                  const MachineConfig& config) {
   const int count = static_cast<int>(frames.size());
-  const int group = config.frame_average ? config.cells.cell_count() : 1;
+  const int group = unit_frames(config);
   std::vector<DistributionUnit> units;
   for (int first = 0; first < count; first += group) {
     DistributionUnit u;
@@ -92,37 +93,19 @@ FrameScreen compose_frame(const WindowLayout& layout, const std::vector<std::uni
   return out;
 }
 
-// The most video memory a cell needs for a unit (UnitTimes::video_memory_bytes).
-std::uint64_t unit_video_memory(const std::vector<FrameWork>& frames, const DistributionUnit& unit,
-                                const std::vector<std::unique_ptr<Cell>>& cells) {
-  std::uint64_t most = 0;
-  for (const auto& cell : cells) {
-    std::uint64_t bytes = 0;
-    for (int f = unit.first_frame; f < unit.first_frame + unit.frames; ++f) {
-      const WindowLayout& layout = frames[f].layout;
-      const CellWindow& w = layout.window(cell->id());
-      bytes += static_cast<std::uint64_t>(w.pixel_count()) * kVideoPixelBytes;
-      if (unit.corners_needed.empty()) continue;
-      for (int k = 0; k < w.pixel_count(); ++k) {
-        const ScreenPixel p = w.screen_pixel(k);
-        bytes += static_cast<std::uint64_t>(owned_corner_count(p.x, p.y, layout.width(), layout.height())) *
-                 kScreenSampleBytes;
-      }
-    }
-    if (!unit.corners_needed.empty()) bytes += unit.corners_needed[cell->id()] * kScreenSampleBytes;
-    most = std::max(most, bytes);
-  }
-  return most;
-}
-
 // A run's preconditions that the parts cannot check themselves: frame
-// averaging in dot mode, at least one frame, every frame's data within a
-// cell's memory.
-void check_frames(const std::vector<FrameWork>& frames, const MachineConfig& config) {
+// averaging in dot mode, at least one frame; then the units' size resolved
+// and every unit within a cell's memory and video memory. Returns what a cell
+// holds for each unit.
+std::vector<UnitMemory> check_frames(const std::vector<FrameWork>& frames, MachineConfig& config) {
   if (config.frame_average && config.mode != PixelMode::Dot)
     throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
   if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
-  for (const FrameWork& f : frames) check_cell_memory(f.footprint, config.profile);
+  std::vector<SceneFootprint> footprints;
+  for (const FrameWork& f : frames) footprints.push_back(f.footprint);
+  const int width = frames[0].layout.width(), height = frames[0].layout.height();
+  config = resolve_units(footprints, config, width, height);
+  return unit_memories(footprints, config, width, height);
 }
 
 // The host's voxel generation over all frames, by process, and its operations
@@ -212,11 +195,7 @@ void MachineParts::unit_begins(std::size_t u) {
   if (antialiased) units[u].exchange = plan_exchange(frames, units[u]);
 }
 
-void MachineParts::unit_ends(std::size_t u) {
-  if (!antialiased) return;
-  for (CellId c = 0; c < grid.cell_count(); ++c) units[u].corners_needed.push_back(units[u].exchange->needs(c).size());
-  units[u].exchange.reset();
-}
+void MachineParts::unit_ends(std::size_t u) { units[u].exchange.reset(); }
 
 void MachineParts::run() {
   kernel.spawn(host.run());
@@ -252,13 +231,13 @@ void record_traffic(MachineParts& m, SimulationResult& result) {
   result.events = m.kernel.events_run();
 }
 
-// When the host started and collected each unit; the last collection is the
-// run's time.
-void record_units(const MachineParts& m, SimulationResult& result) {
+// When the host started and collected each unit, and what a cell held for
+// it; the last collection is the run's time.
+void record_units(const MachineParts& m, const std::vector<UnitMemory>& memory, SimulationResult& result) {
   result.frame = m.host.unit_end().back();
   for (std::size_t u = 0; u < m.units.size(); ++u)
     result.units.push_back({m.units[u].first_frame, m.units[u].frames, m.host.unit_start()[u], m.host.unit_end()[u],
-                            unit_video_memory(m.frames, m.units[u], m.cells)});
+                            static_cast<std::uint64_t>(memory[u].cell_memory), memory[u].video_memory});
 }
 
 // What a cell measured, as the report gives it.
@@ -303,8 +282,9 @@ void compose_screens(const MachineParts& m, const MachineConfig& config, Simulat
 
 // Plan the units, wire the parts, run their programs, collect what they
 // recorded.
-SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& config) {
-  check_frames(frames, config);
+SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& asked) {
+  MachineConfig config = asked;
+  const std::vector<UnitMemory> memory = check_frames(frames, config);
   SimulationResult result;
   result.config = config;
   result.footprint = frames[0].footprint;
@@ -315,7 +295,7 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   machine.run();
 
   record_traffic(machine, result);
-  record_units(machine, result);
+  record_units(machine, memory, result);
   record_cells(machine, host_work, result);
   compose_screens(machine, config, result);
   return result;

@@ -51,7 +51,8 @@ int strided_count(int length, int first, int stride) {
 
 DotShift dot_shift_for_frame(const CellGrid& grid, int frame) {
   const int k = frame % grid.cell_count();
-  return {k / grid.cols, k % grid.cols};
+  const int row = k % grid.rows;
+  return {row, (row + k / grid.rows) % grid.cols};
 }
 
 WindowLayout::WindowLayout(PixelMode mode, CellGrid grid, int width, int height, DotShift shift)

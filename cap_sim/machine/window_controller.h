@@ -69,10 +69,13 @@ struct DotShift {
   bool operator==(const DotShift&) const = default;
 };
 
-// The shift of frame f under frame-averaged distribution: frames f = 0, 1, ...
-// take the shifts (0, 0), (0, 1), ..., (0, C-1), (1, 0), ... in row-major order,
-// so over any R x C consecutive frames every cell owns every position of the
-// square exactly once.
+// The shift of frame k of a unit under frame-averaged distribution: diagonal,
+// rows by k mod R and columns by (k mod R + k div R) mod C (k taken mod R x C).
+// Every R consecutive frames from k = 0, R, 2R, ... move a cell over R
+// different rows and R different columns of the square, so a unit of a few
+// multiples of R frames, fewer than R x C, still spreads each pixel over
+// different cells; R x C frames take every shift once, so every cell owns
+// every position of the square exactly once.
 DotShift dot_shift_for_frame(const CellGrid& grid, int frame);
 
 // The window set-up of the whole machine for one mode, grid and screen size.

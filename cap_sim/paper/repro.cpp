@@ -157,6 +157,7 @@ Table45 run_table_4_5(const ReproOptions& o) {
     t.runs[i].frame = r.frame;
     t.runs[i].seconds = r.frame.seconds(config.profile.clock_hz);
     t.runs[i].max_deviation_percent = max_deviation_percent(r);
+    if (config.frame_average) t.frames_per_unit = r.config.frame_average_group;
     SimulateSettings run;
     run.scenes = {disb_files(o.scenes_dir, t.frames)};
     run.output = "disb.png";

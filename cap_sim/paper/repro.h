@@ -59,6 +59,7 @@ struct Table45Run {
 };
 struct Table45 {
   int frames = 0;  // 0: not run
+  int frames_per_unit = 0;  // frame averaged: what a cell's memories hold (frames_per_unit)
   Table45Run runs[3];
 };
 

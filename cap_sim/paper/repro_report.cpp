@@ -427,11 +427,11 @@ void table_4_5_section(std::string& md, const ReproResult& r) {
   }
   md += fmt::format(
       "`scenes/disb/f00000.csg` to `f{:05}.csg` ({} frames), 8 x 8 cells, dot mode, `cap` profile, {} pixels "
-      "(the screen DISB is laid out for, whatever the other tables' size); "
-      "antialiasing depth 2; frame averaged: the frames go out in groups of 64, each frame with its own dot "
-      "shift ([animation.md](animation.md)). Max deviation: the largest d over the frames (over the groups "
-      "when frame averaged).\n\n",
-      t.frames - 1, t.frames, fmt::format("{0} x {0}", kDisbSide));
+      "(the screen DISB is laid out for, whatever the other tables' size); antialiasing depth 2; frame "
+      "averaged: the frames go out in units of {}, as many as a cell's memory and video memory hold (at most "
+      "64), each frame with its own dot shift ([animation.md](animation.md)). Max deviation: the largest d "
+      "over the frames (over the units when frame averaged).\n\n",
+      t.frames - 1, t.frames, fmt::format("{0} x {0}", kDisbSide), t.frames_per_unit);
   md += "| processing | time: ours | paper | ours / paper | max deviation: ours | paper |\n";
   md += "|---|---|---|---|---|---|\n";
   for (int i = 0; i < 3; ++i) {
@@ -441,9 +441,9 @@ void table_4_5_section(std::string& md, const ReproResult& r) {
                       p.max_deviation);
   }
   md += fmt::format(
-      "\nAntialiasing raises the largest deviation {:.1f}x (the paper's {:.1f}x) and frame averaging brings it "
-      "back to {:.1f} % (the paper's {:g} %): the load that antialiasing puts on the cells that own an edge "
-      "spreads out again when every frame has its own dot pattern. The times are {:.1f} to {:.1f} times the "
+      "\nAntialiasing raises the largest deviation {:.1f}x (the paper's {:.1f}x) and frame averaging gives "
+      "{:.1f} % (the paper's {:g} %): the load that antialiasing puts on the cells that own an edge spreads out "
+      "again over the frames of a unit, each with its own dot pattern, as far as a unit holds several. The times are {:.1f} to {:.1f} times the "
       "paper's: every frame pays Table 4-1's CAP costs with the fitted per-ray work (Table 5-1 below), on "
       "a DISB of our own.\n",
       t.runs[1].max_deviation_percent / t.runs[0].max_deviation_percent,

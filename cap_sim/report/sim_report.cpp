@@ -1,6 +1,7 @@
 #include "report/sim_report.h"
 
 #include "machine/statistics.h"
+#include "machine/unit_memory.h"
 #include "report/chrome_trace.h"
 
 #include <fmt/core.h>
@@ -22,7 +23,7 @@ std::string format_sequence(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   std::string out = fmt::format("\n{} frames{}\n{:>6} {:>12} {:>12} {:>8}\n", r.screens.size(),
                                 r.config.frame_average
-                                    ? fmt::format(", frame averaged in groups of {}", r.config.cells.cell_count())
+                                    ? fmt::format(", frame averaged in groups of {}", unit_frames(r.config))
                                     : "",
                                 "frame", "Max s", "Min s", "d %");
   const std::vector<LoadSpread> frames = frame_spreads(r);
@@ -30,14 +31,16 @@ std::string format_sequence(const SimulationResult& r) {
     out += fmt::format("{:>6} {:>12.3f} {:>12.3f} {:>8.2f}\n", f, frames[f].max_finish.seconds(hz),
                        frames[f].min_finish.seconds(hz), frames[f].deviation_percent);
   if (r.config.frame_average) {
-    out += fmt::format("{:>6} {:>6} {:>12} {:>12} {:>8} {:>14}\n", "group", "frames", "Max s", "Min s", "d %",
-                       "video memory");
+    out += fmt::format("{:>6} {:>6} {:>12} {:>12} {:>8} {:>14} {:>14}\n", "group", "frames", "Max s", "Min s",
+                       "d %", "memory", "video memory");
     const std::vector<LoadSpread> units = unit_spreads(r);
     for (std::size_t u = 0; u < units.size(); ++u)
-      out += fmt::format("{:>6} {:>6} {:>12.3f} {:>12.3f} {:>8.2f} {:>12} B\n", u, r.units[u].frames,
+      out += fmt::format("{:>6} {:>6} {:>12.3f} {:>12.3f} {:>8.2f} {:>12} B {:>12} B\n", u, r.units[u].frames,
                          units[u].max_finish.seconds(hz), units[u].min_finish.seconds(hz),
-                         units[u].deviation_percent, r.units[u].video_memory_bytes);
+                         units[u].deviation_percent, r.units[u].cell_memory_bytes, r.units[u].video_memory_bytes);
   }
+  out += "The Max, Min and d above the breakdown compare totals over the whole sequence; the load spread that "
+         "costs time is each unit's, from its start (the largest is Table 4-5's max deviation, below).\n";
   out += fmt::format("\nTable 4-5 form, {} frames:\n{:<30} {:>12} {:>15}\n{:<30} {:>10.3f} s {:>13.2f} %\n",
                      r.screens.size(), "processing", "time", "max deviation", processing_name(r),
                      r.frame.seconds(hz), max_deviation_percent(r));
@@ -95,14 +98,22 @@ std::string format_report(const SimulationResult& r) {
       "CAP simulation: {} cells, {} mode, profile {} ({} Hz), {}x{} pixels\n",
       to_string(r.config.cells), to_string(r.config.mode), r.config.profile.name, hz,
       r.width, r.height);
-  out += fmt::format("data broadcast: program {} B, scene {} B, voxel data {} B\n\n",
+  out += fmt::format("data broadcast: program {} B, scene {} B, voxel data {} B\n",
                      r.config.profile.program_bytes, r.footprint.scene_bytes(),
                      r.footprint.voxel_bytes());
+  const UnitMemoryPeak peak = unit_memory_peak(r);
+  out += fmt::format("a cell holds, for a unit of {} frame{} (the most over the units): memory {} of {} B, "
+                     "video memory {} of {} B\n\n",
+                     unit_frames(r.config), unit_frames(r.config) == 1 ? "" : "s", peak.cell_memory_bytes,
+                     r.config.profile.cell_memory_bytes, peak.video_memory_bytes, r.config.profile.video_memory_bytes);
   out += cell_table(r, StatisticScope::Always, true);
 
   const LoadSpread s = load_spread(r);
   out += fmt::format("\nMax {:.3f} s   Min {:.3f} s   d = (Max - Min) / Max = {:.2f} %\n",
                      s.max_finish.seconds(hz), s.min_finish.seconds(hz), s.deviation_percent);
+  const LoadSpread busy = busy_spread(r);
+  out += fmt::format("busy only (the cycles each cell computed): Max {:.3f} s   Min {:.3f} s   d = {:.2f} %\n",
+                     busy.max_finish.seconds(hz), busy.min_finish.seconds(hz), busy.deviation_percent);
   out += fmt::format("frame time {:.3f} s ({} cycles)\n\n", r.frame.seconds(hz), r.frame.count());
 
   out += "time by process (all cells' work and the host's voxel generation):\n";
@@ -171,6 +182,7 @@ void add_sequence(nlohmann::json& report, const SimulationResult& r) {
     j["frames"] = r.units[u].frames;
     j["start_cycles"] = r.units[u].start.count();
     j["end_cycles"] = r.units[u].end.count();
+    j["cell_memory_bytes"] = r.units[u].cell_memory_bytes;
     j["video_memory_bytes"] = r.units[u].video_memory_bytes;
     units.push_back(j);
   }
@@ -208,6 +220,8 @@ nlohmann::json report_json(const SimulationResult& r) {
     breakdown_cycles[c.json_key] = r.breakdown[c.category].count();
   }
   const LoadSpread s = load_spread(r);
+  const LoadSpread busy = busy_spread(r);
+  const UnitMemoryPeak peak = unit_memory_peak(r);
   json report = {{"mode", to_string(r.config.mode)},
           {"cells_grid", to_string(r.config.cells)},
           {"profile", r.config.profile.name},
@@ -221,6 +235,16 @@ nlohmann::json report_json(const SimulationResult& r) {
           {"max_seconds", s.max_finish.seconds(hz)},
           {"min_seconds", s.min_finish.seconds(hz)},
           {"deviation_percent", s.deviation_percent},
+          {"busy_max_seconds", busy.max_finish.seconds(hz)},
+          {"busy_min_seconds", busy.min_finish.seconds(hz)},
+          {"busy_max_cycles", busy.max_finish.count()},
+          {"busy_min_cycles", busy.min_finish.count()},
+          {"busy_deviation_percent", busy.deviation_percent},
+          {"unit_memory", {{"unit_frames", unit_frames(r.config)},
+                           {"cell_memory_bytes", peak.cell_memory_bytes},
+                           {"cell_memory_limit_bytes", r.config.profile.cell_memory_bytes},
+                           {"video_memory_bytes", peak.video_memory_bytes},
+                           {"video_memory_limit_bytes", r.config.profile.video_memory_bytes}}},
           {"breakdown", breakdown},
           {"breakdown_cycles", breakdown_cycles},
           {"total_cycles", r.frame.count()}};

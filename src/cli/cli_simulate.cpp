@@ -1,4 +1,6 @@
-// `capsim simulate`: the CAP machine running the tracer, cycle by cycle.
+// `capsim simulate`: the CAP machine running the tracer. The model charges each
+// operation's cost in integer cycles of the cell's clock inside an
+// event-driven machine.
 
 #include "capsim/progress.h"
 #include "cli/cli_commands.h"
@@ -69,6 +71,18 @@ bool is_builtin_profile(const std::string& value) {
 bool is_readable_file(const std::string& path) {
   std::error_code ec;
   return std::filesystem::is_regular_file(path, ec) && std::ifstream(path);
+}
+
+// The costs that rounding to whole cycles of the profile's clock moved by more
+// than 1 %: the run charges the rounded cycles, so each is named on stderr (a
+// 1 kHz clock makes CSG free).
+void warn_of_rounding(const sim::CostProfile& p) {
+  for (const sim::ProfileTime& t : p.rounding())
+    fmt::print(stderr,
+               "capsim: warning: cost profile {}: {} = {} us becomes {} cycles at clock_hz {} ({:.4g} exactly, "
+               "{:.1f} % off); the run charges {} cycles\n",
+               p.source, t.key, t.us, t.cycles.count(), p.clock_hz, t.exact_cycles, 100 * t.rounding_error(),
+               t.cycles.count());
 }
 
 sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
@@ -152,6 +166,7 @@ Command add_simulate_command(CLI::App& app) {
       staged.push_back(o);
     StagedOutputs outputs(staged, inputs);
     config.profile = sim::load_cost_profile(sim->profile.text);
+    warn_of_rounding(config.profile);
     config.completion_cycles = !sim->html.empty();
 
     const auto started = std::chrono::steady_clock::now();

@@ -30,8 +30,9 @@ int main(int argc, char** argv) {
   keep_freed_memory();
   capsim::remove_temp_files_on_signals();  // before TBB starts any thread
   CLI::App app{
-      "capsim: a cycle-level simulator of Fujitsu's Cellular Array Processor (CAP)\n"
-      "running the CSG ray tracer of Murakami, Sato and Hirota."};
+      "capsim: a simulator of Fujitsu's Cellular Array Processor (CAP) running the CSG\n"
+      "ray tracer of Murakami, Sato and Hirota. The model charges each operation's cost\n"
+      "in integer cycles of the cell's clock inside an event-driven machine."};
   app.require_subcommand(0, 1);  // none is a usage error, reported below in capsim's words
   app.set_version_flag("--version", "capsim " CAPSIM_VERSION);  // the project version in CMakeLists.txt
   const capsim::cli::Command render = capsim::cli::add_render_command(app);

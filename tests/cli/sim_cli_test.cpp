@@ -63,6 +63,25 @@ TEST(CliSimulate, ReportHasTheDocumentedKeys) {
   EXPECT_DOUBLE_EQ(j["max_seconds"].get<double>(), static_cast<double>(max_finish) / 8e6);
   EXPECT_NE(r.out.find("d = (Max - Min) / Max"), std::string::npos);
   EXPECT_NE(r.out.find("CSG evaluation"), std::string::npos);
+  // The spread of the cells' busy time alone, without the host's prefix.
+  std::uint64_t busy_max = 0, busy_min = UINT64_MAX;
+  for (const auto& c : j["cells"]) {
+    busy_max = std::max<std::uint64_t>(busy_max, c["busy_cycles"]);
+    busy_min = std::min<std::uint64_t>(busy_min, c["busy_cycles"]);
+  }
+  EXPECT_EQ(j["busy_max_cycles"], busy_max);
+  EXPECT_EQ(j["busy_min_cycles"], busy_min);
+  EXPECT_DOUBLE_EQ(j["busy_deviation_percent"].get<double>(),
+                   100.0 * static_cast<double>(busy_max - busy_min) / static_cast<double>(busy_max));
+  EXPECT_NE(r.out.find("busy only (the cycles each cell computed): Max "), std::string::npos) << r.out;
+  // What a cell held for its unit (one frame), against the profile's sizes.
+  EXPECT_EQ(j["unit_memory"]["unit_frames"], 1);
+  EXPECT_EQ(j["unit_memory"]["cell_memory_bytes"],
+            j["program_bytes"].get<std::uint64_t>() + j["scene_bytes"].get<std::uint64_t>() +
+                j["voxel_bytes"].get<std::uint64_t>());
+  EXPECT_EQ(j["unit_memory"]["cell_memory_limit_bytes"], 1048576);
+  EXPECT_EQ(j["unit_memory"]["video_memory_bytes"], 5 * 40 * 3);  // 40x30 in line mode on 6 cells: 5 rows each
+  EXPECT_EQ(j["unit_memory"]["video_memory_limit_bytes"], 1048576);
 }
 
 TEST(CliSimulate, TraceHasAHostABusAndOneTrackPerCell) {
@@ -115,6 +134,27 @@ void write_cap_profile_with(const std::string& path, const std::string& section,
       read_file(std::string(CAPSIM_SOURCE_DIR) + "/cap_sim/profiles/cap.json"));
   (section.empty() ? p : p[section])[key] = value;
   std::ofstream(path) << p.dump(2);
+}
+
+TEST(CliSimulate, WarnsOfCostsThatRoundingToCyclesMoved) {
+  TempDir dir;
+  write_cap_profile_with(dir / "slow.json", "", "clock_hz", 1000);  // 1 ms a cycle
+  const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 16x16 --profile " +
+                                     (dir / "slow.json"), dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  // 160 us is 0.16 cycles: the status tree's visits become free.
+  EXPECT_NE(r.err.find("capsim: warning: cost profile " + (dir / "slow.json") +
+                       ": cell_costs_us.tree_visit = 160 us becomes 0 cycles at clock_hz 1000 (0.16 exactly, "
+                       "100.0 % off); the run charges 0 cycles\n"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("cell_costs_us.matvec = 597 us becomes 1 cycles"), std::string::npos) << r.err;
+  // 2980 us is 2.98 cycles: 3 is within 1 %.
+  EXPECT_EQ(r.err.find("sphere_test"), std::string::npos) << r.err;
+  // The built-in profile gives no warning.
+  const RunResult plain = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 16x16", dir);
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("warning"), std::string::npos) << plain.err;
 }
 
 TEST(CliSimulate, CycleCountsBeyond64BitsFailNamingTheProfileAndWriteNothing) {

@@ -138,7 +138,7 @@ TEST(CompletionCycles, EveryFrameOfASequenceCompletesWhenItsWritingEnds) {
       const SimulationResult r = simulate_frames(list, config, 2, false);
       ASSERT_EQ(r.screens.size(), 5u);
       for (int f = 0; f < 5; ++f)
-        expect_cells_complete_in_video_order(r, frame_layout(config, 24, 20, f), f,
+        expect_cells_complete_in_video_order(r, frame_layout(r.config, 24, 20, f), f,
                                              "frame " + std::to_string(f) + (average ? " averaged" : "") +
                                                  " aa " + std::to_string(aa));
     }

@@ -61,7 +61,7 @@ std::string minimal_profile_text() {
                       "grid_voxel": 6},
     "bus": {"bytes_per_second": 1000, "arbitration_us": 1.4, "latency_us": 1.6},
     "link": {"bits_per_second": 8000, "latency_us": 0, "topology": "mesh"},
-    "cell_memory_bytes": 4096, "program_bytes": 1024})").dump();
+    "cell_memory_bytes": 4096, "program_bytes": 1024, "video_memory_bytes": 2048})").dump();
 }
 
 TEST(CostProfile, ConvertsMicrosecondsToRoundedCycles) {
@@ -139,6 +139,44 @@ TEST(CostProfile, RefusesAProgramLargerThanACellsMemory) {
   nlohmann::json j = nlohmann::json::parse(minimal_profile_text());
   j["program_bytes"] = 4097;
   expect_refused(j.dump(), "program_bytes (4097) must not exceed cell_memory_bytes (4096)");
+}
+
+TEST(CostProfile, RoundingNamesTheTimesMovedByMoreThanOnePercent) {
+  // At 1 MHz the minimal profile's times are whole cycles but the bus's
+  // 1.4 us (1 cycle, 28.6 % off) and 1.6 us (2 cycles, 25 % off).
+  const CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
+  EXPECT_EQ(p.times.size(), 23u);  // 14 cell, 6 host, 2 bus, 1 link
+  const std::vector<ProfileTime> off = p.rounding();
+  ASSERT_EQ(off.size(), 2u);
+  EXPECT_EQ(off[0].key, "bus.arbitration_us");
+  EXPECT_EQ(off[0].us, 1.4);
+  EXPECT_EQ(off[0].cycles, Cycles(1));
+  EXPECT_NEAR(off[0].rounding_error(), 0.4 / 1.4, 1e-12);
+  EXPECT_EQ(off[1].key, "bus.latency_us");
+  EXPECT_EQ(off[1].cycles, Cycles(2));
+  EXPECT_TRUE(p.rounding(0.3).empty());
+  // At 1 kHz the CSG terms (7 and 8 us) become 0 cycles: free.
+  nlohmann::json slow = nlohmann::json::parse(minimal_profile_text());
+  slow["clock_hz"] = 1000;
+  bool tree_visit_free = false;
+  for (const ProfileTime& t : parse_cost_profile(slow.dump(), "slow").rounding())
+    if (t.key == "cell_costs_us.tree_visit") tree_visit_free = t.cycles == Cycles(0) && t.rounding_error() == 1;
+  EXPECT_TRUE(tree_visit_free);
+  // The built-in profiles' times are whole cycles of their clocks.
+  EXPECT_TRUE(load_cost_profile("cap").rounding().empty());
+  EXPECT_TRUE(load_cost_profile("m380").rounding().empty());
+}
+
+TEST(CostProfile, ReadsTheVideoMemoryAsAPositiveSize) {
+  EXPECT_EQ(parse_cost_profile(minimal_profile_text(), "test").video_memory_bytes, 2048u);
+  EXPECT_EQ(load_cost_profile("cap").video_memory_bytes, 1u << 20);  // 1 MiB per cell
+  nlohmann::json j = nlohmann::json::parse(minimal_profile_text());
+  for (const nlohmann::json& bad : {nlohmann::json(0), nlohmann::json(-1), nlohmann::json(1.5), nlohmann::json("1")}) {
+    j["video_memory_bytes"] = bad;
+    expect_refused(j.dump(), "video_memory_bytes must be a positive whole number");
+  }
+  j.erase("video_memory_bytes");
+  expect_refused(j.dump(), "missing key \"video_memory_bytes\"");
 }
 
 TEST(CostProfile, DataCyclesBeyondTheCounterThrowNamingTheRate) {

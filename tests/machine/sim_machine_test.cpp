@@ -4,6 +4,7 @@
 
 #include "machine/frame_protocol.h"
 #include "machine/machine.h"
+#include "machine/unit_memory.h"
 #include "machine/run_figures.h"
 
 #include "capsim/parser.h"

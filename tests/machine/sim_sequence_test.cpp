@@ -2,6 +2,7 @@
 // frames, the groups of frame averaging, and determinism.
 
 #include "machine/machine.h"
+#include "machine/unit_memory.h"
 #include "machine/run_figures.h"
 #include "support/sequence_builders.h"
 
@@ -12,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <memory>
 #include <set>
@@ -39,6 +41,31 @@ TEST(FrameAveraging, EveryCellOwnsEveryPositionOnceInAnyRxCConsecutiveFrames) {
       }
     }
   }
+}
+
+TEST(FrameAveraging, FrameKOfAUnitShiftsThePatternDiagonally) {
+  // Rows by k mod R, columns by (k mod R + k div R) mod C.
+  const CellGrid g23{2, 3};
+  const std::vector<DotShift> expected = {{0, 0}, {1, 1}, {0, 1}, {1, 2}, {0, 2}, {1, 0}};
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(dot_shift_for_frame(g23, k), expected[k]) << k;
+  EXPECT_EQ(dot_shift_for_frame(g23, 6), (DotShift{0, 0}));
+  const CellGrid g88{8, 8};
+  EXPECT_EQ(dot_shift_for_frame(g88, 7), (DotShift{7, 7}));
+  EXPECT_EQ(dot_shift_for_frame(g88, 8), (DotShift{0, 1}));
+  EXPECT_EQ(dot_shift_for_frame(g88, 63), (DotShift{7, 6}));
+  // Any R frames from k = jR move every cell over R different rows and R
+  // different columns of the square; a unit of a few multiples of R, fewer
+  // than R x C, spreads each pixel over as many cells as it has frames.
+  for (const CellGrid grid : {CellGrid{2, 3}, CellGrid{3, 5}, CellGrid{8, 8}, CellGrid{4, 2}})
+    for (int j = 0; j < grid.cols; ++j) {
+      std::set<int> rows, cols;
+      for (int k = j * grid.rows; k < (j + 1) * grid.rows; ++k) {
+        rows.insert(dot_shift_for_frame(grid, k).rows);
+        cols.insert(dot_shift_for_frame(grid, k).cols);
+      }
+      EXPECT_EQ(static_cast<int>(rows.size()), grid.rows) << to_string(grid) << " " << j;
+      EXPECT_EQ(static_cast<int>(cols.size()), std::min(grid.rows, grid.cols)) << to_string(grid) << " " << j;
+    }
 }
 
 TEST(FrameAveraging, ShiftedLayoutsGiveEveryPixelOneOwnerAndInvertTheirWindows) {
@@ -179,6 +206,9 @@ TEST(Sequence, DisbHasTheShapeOfTable45) {
   EXPECT_LE(time_ratio, 5.0);
   EXPECT_GE(max_deviation_percent(aa), 40.0);
   EXPECT_GE(max_deviation_percent(aa), 5 * max_deviation_percent(plain));
+  // A CAP cell's 1 MiB of video memory holds 8 antialiased frames' pixels and
+  // corner samples at 384 x 384: units of 8 (one turn of the 8 rows).
+  EXPECT_EQ(averaged.config.frame_average_group, 8);
   EXPECT_LT(max_deviation_percent(averaged), 10.0);
   EXPECT_LT(averaged.frame.seconds(1), 0.7 * aa.frame.seconds(1));  // saves at least 30 %
   // The figures, exactly (simulated cycles are deterministic).

@@ -17,6 +17,7 @@ inline CostProfile round_number_profile() {
   p.link.latency = Cycles(5);
   p.cell_memory_bytes = 1 << 20;
   p.program_bytes = 1000;
+  p.video_memory_bytes = 1 << 20;
   return p;
 }
 
