@@ -51,13 +51,14 @@ RunFigures run_experiment(const RunSpec& spec, int threads) {
   MachineConfig config;
   config.cells = spec.cells;
   config.mode = spec.mode;
-  config.profile = load_cost_profile(spec.profile);
+  config.profile = spec.costs ? *spec.costs : load_cost_profile(spec.profile);
   config.aa.depth = spec.aa_depth;  // the default threshold, as the command's
   config.screen = ScreenFormat::Srgb8;  // as for `-o screen.png`; the cycles do not depend on it
   const SimulationResult r = simulate_frame(tracer, config, threads, false);
 
   RunFigures f;
   f.command = run_command(spec);
+  f.profile = config.profile;
   f.clock_hz = config.profile.clock_hz;
   f.frame = r.frame;
   f.spread = load_spread(r);
@@ -65,6 +66,7 @@ RunFigures run_experiment(const RunSpec& spec, int threads) {
   for (const CellReport& c : r.cells) {
     f.ops += c.ops;
     f.pixels += c.pixels;
+    f.cells.push_back({c.ops, c.pixels, c.finish});
   }
   f.voxels = r.voxel_counts;
   f.bus = r.bus;

@@ -21,11 +21,23 @@ struct RunSpec {
   CellGrid cells{8, 8};
   PixelMode mode = PixelMode::Dot;
   std::string profile = "cap";
+  // The costs to run with instead of the named profile's (a calibration's
+  // trial values); the command still names `profile`.
+  std::optional<CostProfile> costs;
   int aa_depth = 0;
+};
+
+// What one cell did in a run: its operations and when its "done" reached the
+// host (the calibration's Max and Min follow each cell's work).
+struct CellWork {
+  OpCounts ops;
+  std::uint64_t pixels = 0;
+  Cycles finish;
 };
 
 struct RunFigures {
   std::string command;  // the shell command that repeats the run
+  CostProfile profile;  // the costs it ran with
   std::uint64_t clock_hz = 0;
   Cycles frame;  // the frame time: the last "done" at the host (= Max)
   LoadSpread spread;
@@ -33,6 +45,7 @@ struct RunFigures {
   OpCounts ops;             // summed over the cells
   std::uint64_t pixels = 0; // written, summed over the cells
   VoxelGenCounts voxels;    // the host's
+  std::vector<CellWork> cells;
   BusTotals bus;
   LinkTotals links;
   int grid_divisions = 0;  // as used (auto resolved)

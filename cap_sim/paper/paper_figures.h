@@ -74,6 +74,10 @@ inline constexpr std::array<Table51Row, 4> kTable51 = {{
     {"CAD", 178, 20, 20},
 }};
 
+// Table 4-1: the M380's sphere test and 3DDDA set-up, microseconds.
+inline constexpr double kM380SphereTestUs = 18.2;
+inline constexpr double kM380DdaSetupUs = 33.8;
+
 // Table 4-1: the M380 / CAP ratio of the sphere test, and their median over
 // the table's eight operations: a CAP cell is about 164 times slower.
 inline constexpr double kCapOverM380 = 164;

@@ -13,19 +13,29 @@
 
 namespace capsim::sim {
 
-std::vector<CostTerm> shipped_fitted_costs() { return {CostTerm::RayOther, CostTerm::VoxelVisit}; }
-
 namespace {
 
 class Runner {
  public:
   explicit Runner(const ReproOptions& o) : o_(o) {}
 
+  // A run of a model on the CAP (8 x 8 cells, dot mode).
   RunSpec model(const std::string& file) const {
     RunSpec s;
     s.scene = o_.scenes_dir + "/" + file;
     s.width = o_.width;
     s.height = o_.height;
+    s.costs = o_.cap_costs;
+    return s;
+  }
+
+  // The same run on the M380: one cell, its own screen and profile.
+  RunSpec on_m380(RunSpec s) const {
+    s.cells = {1, 1};
+    s.profile = "m380";
+    s.costs = o_.m380_costs;
+    s.width = o_.m380_width;
+    s.height = o_.m380_height;
     return s;
   }
 
@@ -45,43 +55,27 @@ class Runner {
 Table42 table_4_2(const Runner& runner) {
   Table42 t;
   const ReproOptions& o = runner.options();
-  const CostProfile m380 = load_cost_profile("m380");
   for (int row = 0; row < 5; ++row) {
     const LatticeShape shape = lattice_shape(paper::kTable42Objects[row]);
     t.shapes.push_back(shape);
     for (int col = 0; col < 7; ++col) {
       RunSpec s;
       s.lattice = shape;
-      s.width = o.width;
-      s.height = o.height;
+      s = runner.on_m380(s);
       s.grid = paper::kTable42Divisions[col];
-      s.primary_only = true;
-      s.cells = {1, 1};
-      s.profile = "m380";
+      s.primary_only = o.table_4_2_primary_only;
       t.cells[row][col] = runner.run(
           s, fmt::format("Table 4-2: {} spheres, {} divisions", shape.count(), paper::kTable42Divisions[col]));
-      FitCell cell;
-      cell.paper_seconds = paper::kTable42Seconds[row][col];
-      cell.simulated_seconds = t.cells[row][col].frame_seconds();
-      cell.ops = t.cells[row][col].ops;
-      cell.pixels = t.cells[row][col].pixels;
-      cell.voxels = t.cells[row][col].voxels;
-      t.fit_cells.push_back(cell);
     }
   }
-  t.as_shipped = evaluate_costs(t.fit_cells);
-  t.shipped_fit = fit_costs(t.fit_cells, m380, shipped_fitted_costs());
-  t.full_fit = fit_costs(t.fit_cells, m380, all_fitted_costs());
   return t;
 }
 
 Table43 run_table_4_3(const Runner& runner) {
   Table43 t;
   for (int i = 0; i < 3; ++i) {
-    RunSpec s = runner.model("piston.csg");
+    RunSpec s = runner.on_m380(runner.model("piston.csg"));
     s.grid = paper::kTable43Divisions[i];
-    s.cells = {1, 1};
-    s.profile = "m380";
     t.runs[i] = runner.run(s, fmt::format("Table 4-3: PISTON, {} divisions", s.grid));
   }
   return t;
@@ -148,7 +142,7 @@ Table45 run_table_4_5(const ReproOptions& o) {
   }
   for (int i = 0; i < 3; ++i) {
     MachineConfig config;  // 8x8 cells, dot mode
-    config.profile = load_cost_profile("cap");
+    config.profile = o.cap_costs ? *o.cap_costs : load_cost_profile("cap");
     config.screen = ScreenFormat::Srgb8;
     config.aa.depth = i == 0 ? 0 : 2;
     config.frame_average = i == 2;
@@ -158,6 +152,18 @@ Table45 run_table_4_5(const ReproOptions& o) {
     t.runs[i].seconds = r.frame.seconds(config.profile.clock_hz);
     t.runs[i].max_deviation_percent = max_deviation_percent(r);
     if (config.frame_average) t.frames_per_unit = r.config.frame_average_group;
+    t.runs[i].profile = config.profile;
+    t.runs[i].cells = static_cast<int>(r.cells.size());
+    Cycles busy;
+    for (const CellReport& c : r.cells) {
+      t.runs[i].cell_work.ops += c.ops;
+      t.runs[i].cell_work.pixels += c.pixels;
+      busy += c.busy;
+    }
+    t.runs[i].busy_seconds = busy.seconds(config.profile.clock_hz);
+    t.runs[i].voxels = r.voxel_counts;
+    t.runs[i].voxel_generation_seconds =
+        r.breakdown[CostCategory::VoxelGeneration].seconds(config.profile.clock_hz);
     SimulateSettings run;
     run.scenes = {disb_files(o.scenes_dir, t.frames)};
     run.output = "disb.png";
@@ -178,8 +184,7 @@ Table51 run_table_5_1(const Runner& runner, const Table44& t44) {
     RunSpec s = runner.model(files[i]);
     t.cap[i] = from_44[i] >= 0 ? t44.rows[from_44[i]].dot
                                : runner.run(s, fmt::format("Table 5-1: {} on CAP", paper::kTable51[i].model));
-    s.cells = {1, 1};
-    s.profile = "m380";
+    s = runner.on_m380(s);
     t.m380[i] = runner.run(s, fmt::format("Table 5-1: {} on the M380", paper::kTable51[i].model));
   }
   return t;

@@ -15,6 +15,7 @@ Command add_render_command(CLI::App& app);
 Command add_simulate_command(CLI::App& app);
 Command add_lattice_command(CLI::App& app);
 Command add_repro_command(CLI::App& app);
+Command add_calibrate_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 
 }  // namespace capsim::cli

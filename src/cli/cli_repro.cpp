@@ -5,6 +5,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "paper/published_figures.h"
 #include "paper/repro.h"
 #include "report/text_output.h"
 
@@ -23,7 +24,10 @@ namespace {
 struct ReproCliOptions {
   std::string output = "docs/reproduction.md";
   std::string images;  // default: images/ beside the output
-  OptionText<> size{"512x512"};
+  std::string json;    // every compared figure; empty = not written
+  OptionText<> size;   // both screens
+  OptionText<> cap_size{"384x384"};
+  OptionText<> m380_size{"512x512"};
   OptionText<> scenes{"scenes"};
   OptionText<> threads{"0"};
   OptionText<> frames{"64"};
@@ -42,8 +46,16 @@ Command add_repro_command(CLI::App& app) {
           CLI::Validator(image_output_check().get_description()));
   cmd->add_option("--images", o->images,
                   "Directory for the plots table-4-2.svg and graph-4-3.svg (default: images/ beside the report)");
-  add_option(*cmd, "--size", o->size, "Screen of every run, WxH (the paper's is 512x512)", image_size_check())
+  cmd->add_option("--json", o->json,
+                  "Also write every compared figure, the per-table errors and the assumptions as JSON");
+  add_option(*cmd, "--cap-size", o->cap_size,
+             "Screen of the CAP's runs, WxH (the paper does not give it; docs/calibration.md)", image_size_check())
+      ->default_val("384x384");
+  add_option(*cmd, "--m380-size", o->m380_size,
+             "Screen of the M380's runs, WxH (the paper does not give it; docs/calibration.md)", image_size_check())
       ->default_val("512x512");
+  add_option(*cmd, "--size", o->size, "Screen of every run, WxH (sets --cap-size and --m380-size)",
+             image_size_check());
   add_option(*cmd, "--scenes", o->scenes, "Directory of the models (balls.csg, chess.csg, ..., disb/)",
              shipped_models_check())
       ->default_val("scenes");
@@ -55,17 +67,24 @@ Command add_repro_command(CLI::App& app) {
       ->default_val("0");
   return [o] {
     sim::ReproOptions options;
-    std::tie(options.width, options.height) = pair_value(checked(o->size));
+    std::tie(options.width, options.height) = pair_value(checked(o->cap_size));
+    std::tie(options.m380_width, options.m380_height) = pair_value(checked(o->m380_size));
+    if (o->size.option->count() > 0) {
+      std::tie(options.width, options.height) = pair_value(checked(o->size));
+      std::tie(options.m380_width, options.m380_height) = pair_value(checked(o->size));
+    }
     options.threads = whole_value(checked(o->threads));
     options.table_4_5_frames = whole_value(checked(o->frames));
     options.scenes_dir = checked(o->scenes);
     const std::filesystem::path report(o->output);
     const std::filesystem::path images =
         o->images.empty() ? report.parent_path() / "images" : std::filesystem::path(o->images);
-    StagedOutputs outputs({{"--output", o->output},
-                           {"--images (table-4-2.svg)", (images / "table-4-2.svg").string()},
-                           {"--images (graph-4-3.svg)", (images / "graph-4-3.svg").string()}},
-                          {});
+    std::vector<OutputOption> files = {
+        {"--output", o->output},
+        {"--images (table-4-2.svg)", (images / "table-4-2.svg").string()},
+        {"--images (graph-4-3.svg)", (images / "graph-4-3.svg").string()}};
+    if (!o->json.empty()) files.push_back({"--json", o->json});
+    StagedOutputs outputs(files, {});
 
     const auto start = std::chrono::steady_clock::now();
     options.log = [start](const std::string& what) {
@@ -80,6 +99,9 @@ Command add_repro_command(CLI::App& app) {
     sim::write_text_file(outputs["--images (table-4-2.svg)"], sim::table_4_2_plot_svg(result));
     sim::write_text_file(outputs["--images (graph-4-3.svg)"], sim::graph_4_3_plot_svg(result));
     sim::write_text_file(outputs["--output"], sim::reproduction_markdown(result, link.empty() ? "." : link));
+    if (!o->json.empty())
+      sim::write_text_file(outputs["--json"],
+                           sim::reproduction_json(result, sim::compared_figures(result, sim::Exclusions::Table44ChessCad)));
     outputs.commit();
     const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     fmt::print("{}: written ({:.1f} s)\n", o->output, t);

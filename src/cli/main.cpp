@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
   const capsim::cli::Command lattice = capsim::cli::add_lattice_command(app);
   const capsim::cli::Command repro = capsim::cli::add_repro_command(app);
   const capsim::cli::Command bench = capsim::cli::add_bench_command(app);
+  const capsim::cli::Command calibrate = capsim::cli::add_calibrate_command(app);
 
   using capsim::cli::UsageError;
   try {
@@ -54,7 +55,10 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("lattice")) return lattice();
     if (app.got_subcommand("repro")) return repro();
     if (app.got_subcommand("bench")) return bench();
-    throw UsageError("a command is required (accepted: render, simulate, lattice, repro, bench; capsim --help describes them)");
+    if (app.got_subcommand("calibrate")) return calibrate();
+    throw UsageError(
+        "a command is required (accepted: render, simulate, lattice, repro, bench, calibrate; capsim --help "
+        "describes them)");
   } catch (const UsageError& e) {
     fmt::print(stderr, "{}: {}\n", capsim::cli::command_name(app), e.what());
     return 2;

@@ -56,16 +56,16 @@ std::string case_name(const ::testing::TestParamInfo<UsageCase>& info) {
 INSTANTIATE_TEST_SUITE_P(
     Commands, CliUsageError,
     ::testing::Values(
-        UsageCase{"", "capsim: a command is required (accepted: render, simulate, lattice, repro, bench; capsim --help describes them)"},
+        UsageCase{"", "capsim: a command is required (accepted: render, simulate, lattice, repro, bench, calibrate; capsim --help describes them)"},
         UsageCase{"rendr BALLS -o OUT.png",
-                  "capsim: unknown command rendr; did you mean render? (accepted: render, simulate, lattice, repro, bench)"},
+                  "capsim: unknown command rendr; did you mean render? (accepted: render, simulate, lattice, repro, bench, calibrate)"},
         UsageCase{"sim BALLS -o OUT.png",
-                  "capsim: unknown command sim; did you mean simulate? (accepted: render, simulate, lattice, repro, bench)"},
-        UsageCase{"draw BALLS", "capsim: unknown command draw (accepted: render, simulate, lattice, repro, bench)"},
+                  "capsim: unknown command sim; did you mean simulate? (accepted: render, simulate, lattice, repro, bench, calibrate)"},
+        UsageCase{"draw BALLS", "capsim: unknown command draw (accepted: render, simulate, lattice, repro, bench, calibrate)"},
         UsageCase{"--threads 2 render BALLS -o OUT.png",
                   "capsim render: --threads is an option of render: give it after the command's name"},
         UsageCase{"--fast", "capsim: unknown option --fast (capsim itself takes only --help and --version; give "
-                            "options after the command: render, simulate, lattice, repro, bench)"}),
+                            "options after the command: render, simulate, lattice, repro, bench, calibrate)"}),
     case_name);
 
 INSTANTIATE_TEST_SUITE_P(
@@ -150,7 +150,7 @@ INSTANTIATE_TEST_SUITE_P(
                   "every option)"}),
     case_name);
 
-// The paper's tools: `lattice`, `repro` and `bench modes` check their options
+// The paper's tools: `lattice`, `repro`, `calibrate` and `bench modes` check their options
 // and outputs the same way, before any run.
 INSTANTIATE_TEST_SUITE_P(
     Tools, CliUsageError,
@@ -170,6 +170,13 @@ INSTANTIATE_TEST_SUITE_P(
                                         "the shipped models (balls.csg, chess.csg, ..., disb/))"},
         UsageCase{"repro --scenes SCENES -o OUT/none/r.md",
                   "capsim repro: --output OUT/none/r.md: directory OUT/none does not exist"},
+        UsageCase{"repro --scenes SCENES --cap-size 384", with("capsim repro: --cap-size 384 is not WxH", kSizeRange)},
+        UsageCase{"repro --scenes SCENES -o r.md --images . --json OUT/none/r.json",
+                  "capsim repro: --json OUT/none/r.json: directory OUT/none does not exist"},
+        UsageCase{"calibrate --scenes SCENES --rounds 0",
+                  "capsim calibrate: --rounds 0 is out of range (accepted: 1 to 20)"},
+        UsageCase{"calibrate --scenes SCENES --profiles OUT/none",
+                  "capsim calibrate: --profiles (cap.json) OUT/none/cap.json: directory OUT/none does not exist"},
         UsageCase{"bench", "capsim bench: a benchmark is required (accepted: modes)"},
         UsageCase{"bench mods", "capsim bench: unknown command mods; did you mean modes? (accepted: modes)"},
         UsageCase{"bench modes --bogus",

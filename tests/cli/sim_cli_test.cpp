@@ -142,9 +142,9 @@ TEST(CliSimulate, WarnsOfCostsThatRoundingToCyclesMoved) {
   const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 16x16 --profile " +
                                      (dir / "slow.json"), dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  // 160 us is 0.16 cycles: the status tree's visits become free.
+  // Table 4-1's 160 us is 0.16 cycles: the 3DDDA's steps become free.
   EXPECT_NE(r.err.find("capsim: warning: cost profile " + (dir / "slow.json") +
-                       ": cell_costs_us.tree_visit = 160 us becomes 0 cycles at clock_hz 1000 (0.16 exactly, "
+                       ": cell_costs_us.dda_step = 160 us becomes 0 cycles at clock_hz 1000 (0.16 exactly, "
                        "100.0 % off); the run charges 0 cycles\n"),
             std::string::npos)
       << r.err;

@@ -29,25 +29,22 @@ TEST(CostProfile, CapHoldsTable41AtEightMegahertz) {
   EXPECT_EQ(p.costs[CostTerm::DdaSetup], Cycles(4237 * 8));
   EXPECT_EQ(p.costs[CostTerm::DdaStep], Cycles(160 * 8));
   EXPECT_EQ(p.costs[CostTerm::Matvec], Cycles(597 * 8));
-  EXPECT_EQ(p.costs[CostTerm::RayOther], Cycles(14776 * 8));  // the M380's fitted 90.1 us x 164
-  EXPECT_EQ(p.costs[CostTerm::VoxelVisit], Cycles(1345 * 8));  // the M380's fitted 8.2 us x 164
-  EXPECT_EQ(p.costs[CostTerm::HostMatmat], Cycles(3134 * 8));
+  // The host is the M380's (docs/calibration.md): 18.5 us.
+  EXPECT_EQ(p.costs[CostTerm::HostMatmat], Cycles(148));
   EXPECT_EQ(p.bus.bytes_per_second, 2'000'000u);
   EXPECT_EQ(p.link.bits_per_second, 15'000'000u);
 }
 
-TEST(CostProfile, M380HoldsTable41AtFiftyMegahertz) {
+TEST(CostProfile, M380HoldsTable41AtOneGigahertz) {
   const CostProfile p = load_cost_profile("m380");
-  EXPECT_EQ(p.clock_hz, 50'000'000u);
-  EXPECT_EQ(p.costs[CostTerm::SphereTest], Cycles(910));   // 18.2 us
-  EXPECT_EQ(p.costs[CostTerm::ConeTest], Cycles(1590));    // 31.8 us
-  EXPECT_EQ(p.costs[CostTerm::BoxTest], Cycles(2110));     // 42.2 us
-  EXPECT_EQ(p.costs[CostTerm::DdaSetup], Cycles(1690));    // 33.8 us
-  EXPECT_EQ(p.costs[CostTerm::DdaStep], Cycles(70));       // 1.4 us
-  EXPECT_EQ(p.costs[CostTerm::Matvec], Cycles(180));        // 3.6 us
-  EXPECT_EQ(p.costs[CostTerm::HostMatmat], Cycles(925));        // 18.5 us
-  EXPECT_EQ(p.costs[CostTerm::RayOther], Cycles(4505));    // 90.1 us, fitted to Table 4-2
-  EXPECT_EQ(p.costs[CostTerm::VoxelVisit], Cycles(410));   // 8.2 us, fitted to Table 4-2
+  EXPECT_EQ(p.clock_hz, 1'000'000'000u);
+  EXPECT_EQ(p.costs[CostTerm::SphereTest], Cycles(18200));  // 18.2 us
+  EXPECT_EQ(p.costs[CostTerm::ConeTest], Cycles(31800));    // 31.8 us
+  EXPECT_EQ(p.costs[CostTerm::BoxTest], Cycles(42200));     // 42.2 us
+  EXPECT_EQ(p.costs[CostTerm::DdaSetup], Cycles(33800));    // 33.8 us
+  EXPECT_EQ(p.costs[CostTerm::DdaStep], Cycles(1400));      // 1.4 us
+  EXPECT_EQ(p.costs[CostTerm::Matvec], Cycles(3600));       // 3.6 us
+  EXPECT_EQ(p.costs[CostTerm::HostMatmat], Cycles(18500));  // 18.5 us
 }
 
 std::string minimal_profile_text() {

@@ -163,7 +163,8 @@ unsigned __int128 wide_pixel_cycles(const OpCounts& o, const CostTable& c) {
   auto t = [](std::uint64_t n, Cycles cost) { return static_cast<unsigned __int128>(n) * cost.count(); };
   return t(o.sphere_tests, c[CostTerm::SphereTest]) + t(o.cone_tests, c[CostTerm::ConeTest]) + t(o.box_tests, c[CostTerm::BoxTest]) +
          t(o.dda_setups, c[CostTerm::DdaSetup]) + t(o.dda_steps, c[CostTerm::DdaStep]) + t(o.dda_setups, c[CostTerm::VoxelVisit]) +
-         t(o.dda_steps, c[CostTerm::VoxelVisit]) + t(o.tree_visits, c[CostTerm::TreeVisit]) +
+         t(o.dda_steps, c[CostTerm::VoxelVisit]) + t(o.voxel_passes, c[CostTerm::VoxelPass]) +
+         t(o.tree_visits, c[CostTerm::TreeVisit]) +
          t(o.hits_sorted, c[CostTerm::HitSort]) + t(o.matvec, c[CostTerm::Matvec]) + t(o.shading_evals, c[CostTerm::ShadingEval]) +
          t(o.rays, c[CostTerm::RayOther]) + c[CostTerm::PixelWrite].count();
 }

@@ -136,8 +136,8 @@ void PrintTo(const Model& m, std::ostream* os) { *os << m.file; }
 const Model kModels[] = {
     {"scenes/balls.csg", {125, 0, 0, 1, 0, 0, 0, 0, 0, 124, 0, 0}},
     {"scenes/chess.csg", {25, 32, 87, 2, 48, 7, 3, 7, 3, 133, 7, 3}},
-    {"scenes/piston.csg", {1, 48, 130, 7, 92, 33, 14, 33, 14, 118, 33, 27}},
-    {"scenes/cad.csg", {0, 40, 145, 1, 160, 5, 8, 5, 8, 169, 5, 10}},
+    {"scenes/piston.csg", {1, 46, 132, 6, 94, 33, 14, 33, 14, 118, 33, 27}},
+    {"scenes/cad.csg", {0, 63, 115, 4, 133, 22, 1, 22, 1, 153, 22, 2}},
     {"scenes/disb/f00000.csg", {0, 4, 0, 0, 0, 0, 0, 0, 0, 3, 0, 0}},
 };
 
