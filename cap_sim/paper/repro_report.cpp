@@ -34,9 +34,13 @@ double speed(const RunFigures& base, const RunFigures& run) {
   return static_cast<double>(base.frame.count()) / static_cast<double>(run.frame.count());
 }
 
-// The fraction of a run's primary rays that met the universe (started a 3DDDA).
+// The fraction of a run's primary rays that met the universe (started a
+// 3DDDA). Every other ray starts at a hit inside the universe, so starts a
+// 3DDDA too: the primary rays' set-ups are the rest.
 double coverage(const RunFigures& f) {
-  return f.ops.primary_rays ? static_cast<double>(f.ops.dda_setups) / static_cast<double>(f.ops.primary_rays) : 0;
+  if (f.ops.primary_rays == 0) return 0;
+  const std::uint64_t secondary = f.ops.rays - f.ops.primary_rays;
+  return static_cast<double>(f.ops.dda_setups - secondary) / static_cast<double>(f.ops.primary_rays);
 }
 
 // Intersection tests per ray that met the grid (started a 3DDDA).
