@@ -52,6 +52,8 @@ struct RunFigures {
 
   double seconds(Cycles c) const { return c.seconds(clock_hz); }
   double frame_seconds() const { return seconds(frame); }
+  double category_seconds(CostCategory c) const { return seconds(breakdown[c]); }  // Table 4-3's row
+  double total_seconds() const { return seconds(breakdown.total()); }
 };
 
 // The command line of a run, from the repository root: `capsim simulate`

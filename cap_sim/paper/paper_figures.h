@@ -31,6 +31,13 @@ inline constexpr double kTable43Percent[3][5] = {
     {23.0, 20.4, 17.6, 6.6, 14.8},
 };
 inline constexpr double kTable43Total[3] = {128.5, 33.4, 34.1};
+// Its shares add up to 95, 82 and 82 % (its rows do not sum to its totals):
+// share k of column i as a percentage of the column's own sum.
+inline constexpr double table_4_3_renormalised_percent(int i, int k) {
+  double sum = 0;
+  for (double p : kTable43Percent[i]) sum += p;
+  return 100 * kTable43Percent[i][k] / sum;
+}
 
 // Table 4-4: 64 cells, seconds: Max, Min and d (%) in line and in dot mode.
 struct SpreadFigures {

@@ -14,8 +14,6 @@ namespace {
 
 WorkCounts counts_of(const RunFigures& f) { return {f.ops, f.pixels, f.voxels}; }
 
-double category_seconds(const RunFigures& f, CostCategory c) { return f.seconds(f.breakdown[c]); }
-
 FigureModel one(LinearTime t) {
   FigureModel m;
   m.parts.push_back(std::move(t));
@@ -86,20 +84,18 @@ std::vector<ComparedFigure> compared_figures(const ReproResult& r, Exclusions ex
   for (int i = 0; i < 3; ++i) {
     const RunFigures& f = r.table_4_3.runs[i];
     const std::string row = fmt::format("PISTON, {} divisions", paper::kTable43Divisions[i]);
-    double paper_sum = 0;
-    for (int k = 0; k < kCostCategories; ++k) paper_sum += paper::kTable43Percent[i][k];
-    const double total = f.seconds(f.breakdown.total());
+    const double total = f.total_seconds();
     for (int k = 0; k < kCostCategories; ++k) {
       const CostCategory c = kCostCategoryTable[k].category;
-      add("4-3", row, to_string(c), "seconds", category_seconds(f, c), paper::kTable43Seconds[i][k],
-          one(linear_time(category_seconds(f, c), counts_of(f), f.profile, Machine::M380, c)));
+      add("4-3", row, to_string(c), "seconds", f.category_seconds(c), paper::kTable43Seconds[i][k],
+          one(linear_time(f.category_seconds(c), counts_of(f), f.profile, Machine::M380, c)));
     }
     for (int k = 0; k < kCostCategories; ++k) {
       const CostCategory c = kCostCategoryTable[k].category;
-      const double share = 100 * category_seconds(f, c) / total;
+      const double share = 100 * f.category_seconds(c) / total;
       add("4-3", row, fmt::format("{} share", to_string(c)), "percent", share, paper::kTable43Percent[i][k]);
       add("4-3", row, fmt::format("{} share (renormalised)", to_string(c)), "percent", share,
-          100 * paper::kTable43Percent[i][k] / paper_sum);
+          paper::table_4_3_renormalised_percent(i, k));
     }
   }
 
@@ -168,40 +164,50 @@ std::vector<const ComparedFigure*> fitted_figures(const std::vector<ComparedFigu
   return out;
 }
 
+namespace {
+
+// The fitted times not excluded, of one table or (empty) of all.
+std::vector<const ComparedFigure*> counted(const std::vector<ComparedFigure>& all, const std::string& table) {
+  std::vector<const ComparedFigure*> out;
+  for (const ComparedFigure* f : fitted_figures(all))
+    if (!f->excluded && (table.empty() || f->table == table)) out.push_back(f);
+  return out;
+}
+
+double rms_log_of(const std::vector<const ComparedFigure*>& figures) {
+  std::vector<double> ours, paper;
+  for (const ComparedFigure* f : figures) {
+    ours.push_back(f->ours);
+    paper.push_back(f->paper);
+  }
+  return figures.empty() ? 0 : rms_log_error(ours, paper);
+}
+
+}  // namespace
+
 std::vector<TableError> table_errors(const std::vector<ComparedFigure>& all) {
   std::vector<TableError> out;
   for (const char* table : {"4-2", "4-3", "4-4", "4-5", "5-1"}) {
+    const std::vector<const ComparedFigure*> figures = counted(all, table);
+    if (figures.empty()) continue;
     TableError e;
     e.table = table;
-    double sum = 0, worst = -1;
-    for (const ComparedFigure& f : all) {
-      if (!f.model || f.excluded || f.table != table) continue;
-      const double l = std::log(f.ours / f.paper);
-      sum += l * l;
-      ++e.figures;
-      if (std::abs(l) > worst) {
-        worst = std::abs(l);
-        e.worst = f;
+    e.figures = static_cast<int>(figures.size());
+    e.rms_log = rms_log_of(figures);
+    double worst = -1;
+    for (const ComparedFigure* f : figures) {
+      const double l = std::abs(std::log(f->ours / f->paper));
+      if (l > worst) {
+        worst = l;
+        e.worst = *f;
       }
     }
-    if (e.figures == 0) continue;
-    e.rms_log = std::sqrt(sum / e.figures);
     out.push_back(e);
   }
   return out;
 }
 
-double overall_rms_log(const std::vector<ComparedFigure>& all) {
-  double sum = 0;
-  int n = 0;
-  for (const ComparedFigure& f : all) {
-    if (!f.model || f.excluded) continue;
-    const double l = std::log(f.ours / f.paper);
-    sum += l * l;
-    ++n;
-  }
-  return n ? std::sqrt(sum / n) : 0;
-}
+double overall_rms_log(const std::vector<ComparedFigure>& all) { return rms_log_of(counted(all, "")); }
 
 std::string reproduction_json(const ReproResult& r, const std::vector<ComparedFigure>& all) {
   nlohmann::ordered_json j;

@@ -24,11 +24,8 @@ std::string secs(double s) {
 
 std::string ratio(double ours, double paper) { return fmt::format("{:.2f}", ours / paper); }
 
-double category_seconds(const RunFigures& f, int category) {
-  return f.seconds(f.breakdown.cycles[static_cast<std::size_t>(category)]);
-}
-
-double total_seconds(const RunFigures& f) { return f.seconds(f.breakdown.total()); }
+// Table 4-3's k-th row, in its order.
+double category_seconds(const RunFigures& f, int k) { return f.category_seconds(kCostCategoryTable[k].category); }
 
 double speed(const RunFigures& base, const RunFigures& run) {
   return static_cast<double>(base.frame.count()) / static_cast<double>(run.frame.count());
@@ -49,14 +46,6 @@ double tests_per_grid_ray(const RunFigures& f) {
 }
 
 std::string code(const std::string& s) { return "`" + s + "`"; }
-
-// Table 4-3's shares add up to 95, 82 and 82 % (its rows do not sum to its
-// totals): share k of column i as a percentage of the column's own sum.
-double renormalised_share(int i, int k) {
-  double sum = 0;
-  for (double p : paper::kTable43Percent[i]) sum += p;
-  return 100 * paper::kTable43Percent[i][k] / sum;
-}
 
 std::string yes_no(bool met) { return met ? "met" : "**missed**"; }
 
@@ -128,13 +117,13 @@ std::vector<TargetCheck> reproduction_targets(const ReproResult& r) {
     for (int i = 0; i < 3; ++i)
       for (int k = 0; k < 5; ++k) {
         const RunFigures& f = r.table_4_3.runs[i];
-        const double share = 100 * category_seconds(f, k) / total_seconds(f);
-        const double diff = share - renormalised_share(i, k);
+        const double share = 100 * category_seconds(f, k) / f.total_seconds();
+        const double diff = share - paper::table_4_3_renormalised_percent(i, k);
         if (std::abs(diff) <= 10) {
           ++within;
         } else {
           misses += fmt::format("{}{} at {}: {:.1f} % ({:.1f} %)", misses.empty() ? "" : "; ", kCostCategoryTable[k].name,
-                                paper::kTable43Divisions[i], share, renormalised_share(i, k));
+                                paper::kTable43Divisions[i], share, paper::table_4_3_renormalised_percent(i, k));
         }
       }
     c.met = within == 15;
@@ -260,9 +249,9 @@ void agreement_section(std::string& md, const ReproResult& r) {
 }
 
 // Why each target the runs miss is missed, from what the runs measured.
-void missed_targets(std::string& md, const ReproResult& r) {
+void missed_targets(std::string& md, const ReproResult& r, const std::vector<TargetCheck>& targets) {
   std::string why;
-  for (const TargetCheck& c : reproduction_targets(r)) {
+  for (const TargetCheck& c : targets) {
     if (c.met) continue;
     if (c.target.rfind("Table 4-2: each speed-up", 0) == 0) {
       const Table42& t = r.table_4_2;
@@ -474,17 +463,17 @@ void table_4_3_section(std::string& md, const ReproResult& r) {
   for (int k = 0; k < 5; ++k) {
     md += fmt::format("| {} |", kCostCategoryTable[k].name);
     for (int i = 0; i < 3; ++i) {
-      const double s = category_seconds(t.runs[i], k), share = 100 * s / total_seconds(t.runs[i]);
+      const double s = category_seconds(t.runs[i], k), share = 100 * s / t.runs[i].total_seconds();
       md += fmt::format(" {} ({:.1f} %) | {} ({:.1f} % / {:.1f} %) | {:+.1f} |", secs(s), share,
-                        paper::kTable43Seconds[i][k], paper::kTable43Percent[i][k], renormalised_share(i, k),
-                        share - renormalised_share(i, k));
+                        paper::kTable43Seconds[i][k], paper::kTable43Percent[i][k], paper::table_4_3_renormalised_percent(i, k),
+                        share - paper::table_4_3_renormalised_percent(i, k));
     }
     md += "\n";
   }
   md += "| total |";
   for (int i = 0; i < 3; ++i)
-    md += fmt::format(" {} | {} | ratio {} |", secs(total_seconds(t.runs[i])), paper::kTable43Total[i],
-                      ratio(total_seconds(t.runs[i]), paper::kTable43Total[i]));
+    md += fmt::format(" {} | {} | ratio {} |", secs(t.runs[i].total_seconds()), paper::kTable43Total[i],
+                      ratio(t.runs[i].total_seconds(), paper::kTable43Total[i]));
   md += "\n\n";
   const RunFigures& n2 = t.runs[0];
   md += fmt::format(
@@ -660,10 +649,10 @@ std::string reproduction_markdown(const ReproResult& r, const std::string& image
       defaults ? "" : fmt::format(" --cap-size {}x{} --m380-size {}x{}", o.width, o.height, o.m380_width,
                                   o.m380_height));
   md += "## Targets\n\n| target | measured (paper) | |\n|---|---|---|\n";
-  for (const TargetCheck& c : reproduction_targets(r))
-    md += fmt::format("| {} | {} | {} |\n", c.target, c.measured, yes_no(c.met));
+  const std::vector<TargetCheck> targets = reproduction_targets(r);
+  for (const TargetCheck& c : targets) md += fmt::format("| {} | {} | {} |\n", c.target, c.measured, yes_no(c.met));
   md += "\n";
-  missed_targets(md, r);
+  missed_targets(md, r, targets);
   agreement_section(md, r);
   table_4_2_section(md, r, images);
   table_4_3_section(md, r);

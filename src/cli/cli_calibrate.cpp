@@ -12,7 +12,6 @@
 
 #include <fmt/core.h>
 
-#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <tuple>
@@ -62,11 +61,7 @@ Command add_calibrate_command(CLI::App& app) {
     if (!o->alternatives.empty()) files.push_back({"--alternatives", o->alternatives});
     StagedOutputs outputs(files, {});
 
-    const auto start = std::chrono::steady_clock::now();
-    auto log = [start](const std::string& what) {
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      fmt::print(stderr, "[{:7.1f} s] {}\n", t, what);
-    };
+    const ElapsedLog log;
     const sim::Calibration c = sim::calibrate(options, log);
     sim::write_text_file(outputs["--profiles (cap.json)"], sim::calibrated_profile_json(c.x(), sim::Machine::Cap));
     sim::write_text_file(outputs["--profiles (m380.json)"],

@@ -64,4 +64,10 @@ PendingFile& StagedOutputs::operator[](const std::string& option) {
 
 void StagedOutputs::commit() { commit_all(files_); }
 
+double ElapsedLog::seconds() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void ElapsedLog::operator()(const std::string& what) const { fmt::print(stderr, "[{:7.1f} s] {}\n", seconds(), what); }
+
 }  // namespace capsim::cli

@@ -6,6 +6,7 @@
 
 #include "capsim/pending_file.h"
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,18 @@ class StagedOutputs {
  private:
   std::vector<std::string> options_;
   std::vector<PendingFile> files_;
+};
+
+// Timed lines on stderr for the long paper commands (repro, calibrate): what
+// each is doing, after the seconds since it began.
+class ElapsedLog {
+ public:
+  ElapsedLog() : start_(std::chrono::steady_clock::now()) {}
+  double seconds() const;
+  void operator()(const std::string& what) const;  // "[   12.3 s] what"
+
+ private:
+  std::chrono::steady_clock::time_point start_;
 };
 
 }  // namespace capsim::cli

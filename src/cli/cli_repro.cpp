@@ -11,7 +11,6 @@
 
 #include <fmt/core.h>
 
-#include <chrono>
 #include <filesystem>
 #include <memory>
 #include <tuple>
@@ -86,11 +85,8 @@ Command add_repro_command(CLI::App& app) {
     if (!o->json.empty()) files.push_back({"--json", o->json});
     StagedOutputs outputs(files, {});
 
-    const auto start = std::chrono::steady_clock::now();
-    options.log = [start](const std::string& what) {
-      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      fmt::print(stderr, "[{:7.1f} s] {}\n", t, what);
-    };
+    const ElapsedLog log;
+    options.log = log;
     const sim::ReproResult result = sim::run_reproduction(options);
     // The plots' path as the report links them.
     const std::string link =
@@ -103,8 +99,7 @@ Command add_repro_command(CLI::App& app) {
       sim::write_text_file(outputs["--json"],
                            sim::reproduction_json(result, sim::compared_figures(result, sim::Exclusions::Table44ChessCad)));
     outputs.commit();
-    const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    fmt::print("{}: written ({:.1f} s)\n", o->output, t);
+    fmt::print("{}: written ({:.1f} s)\n", o->output, log.seconds());
     for (const sim::TargetCheck& c : sim::reproduction_targets(result))
       fmt::print("  {}: {}\n", c.met ? "met   " : "MISSED", c.target);
     return 0;
