@@ -122,18 +122,6 @@ void check_unit_memory(const UnitMemory& u, const CostProfile& profile) {
         profile.name, profile.video_memory_bytes));
 }
 
-void check_cell_memory(const SceneFootprint& f, const CostProfile& profile) {
-  // 128 bits: the sum of three 64-bit sizes cannot wrap.
-  const unsigned __int128 needed = static_cast<unsigned __int128>(profile.program_bytes) +
-                                   f.scene_bytes() + f.voxel_bytes();
-  if (needed > profile.cell_memory_bytes)
-    throw std::runtime_error(fmt::format(
-        "the scene does not fit a cell's memory: it needs {} bytes (program {} + scene {} + voxel "
-        "data {}) but a cell of profile '{}' has {} bytes; try a coarser --grid",
-        needed, profile.program_bytes, f.scene_bytes(), f.voxel_bytes(), profile.name,
-        profile.cell_memory_bytes));
-}
-
 int frames_per_unit(const std::vector<SceneFootprint>& frames, const MachineConfig& config, int width,
                     int height) {
   VideoByShift video(config, width, height);

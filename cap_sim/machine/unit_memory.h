@@ -54,10 +54,6 @@ std::vector<UnitMemory> unit_memories(const std::vector<SceneFootprint>& frames,
 // its video memory.
 void check_unit_memory(const UnitMemory& unit, const CostProfile& profile);
 
-// Program + scene + voxel data of one frame must fit a cell's memory; as
-// check_unit_memory for a unit of that one frame, video memory aside.
-void check_cell_memory(const SceneFootprint& footprint, const CostProfile& profile);
-
 // Frame averaged: how many frames a unit holds: the most for which every unit
 // of the run fits the cell's memory and video memory, at most R x C and
 // rounded down to a whole multiple of R, so that the diagonal shifts of a unit

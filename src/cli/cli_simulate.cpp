@@ -75,7 +75,7 @@ bool is_readable_file(const std::string& path) {
 
 // The costs that rounding to whole cycles of the profile's clock moved by more
 // than 1 %: the run charges the rounded cycles, so each is named on stderr (a
-// 1 kHz clock makes CSG free).
+// 1 kHz clock makes the 3DDDA's steps free).
 void warn_of_rounding(const sim::CostProfile& p) {
   for (const sim::ProfileTime& t : p.rounding())
     fmt::print(stderr,

@@ -155,7 +155,11 @@ TEST(Machine, MemoryNeedsBeyond64BitsDoNotWrapIntoAFit) {
   CostProfile profile = load_cost_profile("cap");
   profile.cell_memory_bytes = Cycles::kMax;
   profile.program_bytes = Cycles::kMax;  // + the scene's bytes: beyond 64 bits
-  EXPECT_THROW(check_cell_memory(scene_footprint(scene), profile), std::runtime_error);
+  MachineConfig config = config_of({4, 4}, PixelMode::Dot);
+  config.profile = profile;
+  const std::vector<UnitMemory> units = unit_memories({scene_footprint(scene)}, config, 16, 16);
+  ASSERT_EQ(units.size(), 1u);
+  EXPECT_THROW(check_unit_memory(units[0], profile), std::runtime_error);
 }
 
 // A pixel's cost exactly, in 128 bits: the reference for overflow checks.
