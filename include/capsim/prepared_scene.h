@@ -3,10 +3,12 @@
 // voxel grid, and the camera resolved. Immutable once built and shared by every
 // thread and every simulated cell.
 
+#include "capsim/openscad_camera.h"
 #include "capsim/status_tree.h"
 #include "capsim/voxel_grid.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace capsim {
@@ -19,11 +21,15 @@ struct PrepareOptions {
   int grid = 0;        // divisions per axis; 0 = auto_grid_divisions
   int width = 0;       // 0 = the camera's (or the default 512)
   int height = 0;
+  // OpenSCAD's camera options: when given, they choose the camera, over the
+  // scene's camera statement (openscad_camera on openscad_preview_bounds).
+  std::optional<OpenScadCameraOptions> openscad;
 };
 
 struct PreparedScene {
   Scene scene;                          // as parsed (materials, colours, lights)
-  Camera camera;                        // resolved: the scene's, or framed, with the size applied
+  Camera camera;                        // resolved: the options', the scene's, or framed; with the size applied
+  std::optional<OpenScadCameraOptions> openscad;  // the options that chose the camera, if any
   std::vector<Light> lights;            // resolved: the scene's, or one at the eye
   std::vector<PreparedPrimitive> prims;  // same order as scene.primitives
   std::vector<bool> placed;             // primitive contributes to the CSG tree
@@ -31,6 +37,11 @@ struct PreparedScene {
   VoxelGrid grid;
   VoxelGenCounts voxel_counts;          // the host's work for Algorithm-3
 };
+
+// The box a view frames: with OpenSCAD's options, the one OpenSCAD's preview
+// frames (openscad_preview_bounds), else that of every placed primitive (the
+// voxel grid's universe: the shipped models' views and cycles rest on it).
+Aabb framed_bounds(const PreparedScene& scene);
 
 // The camera used when a scene has none: looking at the centre of the bounds from
 // direction (1, -2, 1.2) (OpenSCAD-like: from the front right, above), z up, 40
@@ -48,9 +59,10 @@ ImageSize image_size(const Scene& scene, const PrepareOptions& options);
 // Throws SceneError for a scene with nothing to draw or a size out of range.
 PreparedScene prepare_scene(Scene scene, const PrepareOptions& options);
 
-// The frames of one sequence seen as one view: every frame whose scene has no
-// camera statement gets the camera that frames the bounds of all the frames
-// (default_camera at its own image size) and, without light statements, the
+// The frames of one sequence seen as one view: every frame whose camera is
+// framed (OpenSCAD's options, or no camera statement) gets the camera that
+// frames the bounds of all the frames (framed_bounds; default_camera or
+// openscad_camera at its own image size) and, without light statements, the
 // light at that camera's eye; so the view does not jump between frames.
 void frame_sequence(std::vector<PreparedScene>& frames);
 

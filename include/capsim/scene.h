@@ -87,14 +87,23 @@ struct CsgNode {
   SourceLoc loc;
 };
 
-// Pinhole camera. fov is the vertical field of view in degrees; aspect = width/height;
+// Perspective: rays from the eye (a pinhole). Orthographic: parallel rays along
+// the view direction, from the plane through the eye facing it (what lies behind
+// that plane is not seen), as OpenSCAD's --projection=ortho shows a model.
+enum class Projection { Perspective, Orthographic };
+const char* to_string(Projection projection);
+
+// The camera. fov is the vertical field of view in degrees; aspect = width/height;
 // right = normalize(forward x up); pixel (i, j), column i from the left and row j
-// from the top, is sampled through (i + 0.5, j + 0.5).
+// from the top, is sampled through (i + 0.5, j + 0.5). Orthographic, the view is
+// 2 |center - eye| tan(fov / 2) high (OpenSCAD's rule: the perspective view's
+// height at the centre).
 struct Camera {
   glm::dvec3 eye{0, -10, 5};
   glm::dvec3 center{0, 0, 0};
   glm::dvec3 up{0, 0, 1};
   double fov_deg = 40;
+  Projection projection = Projection::Perspective;
   int width = 512;
   int height = 512;
   SourceLoc loc;  // where the eye is given (or the camera() statement), for later errors

@@ -89,7 +89,8 @@ class Tracer {
   const PreparedScene& scene_;
   TraceOptions options_;
   glm::dvec3 cam_origin_, cam_forward_, cam_right_, cam_up_;
-  double half_height_ = 1, half_width_ = 1;
+  double half_height_ = 1, half_width_ = 1;  // orthographic: in scene units, else per unit of depth
+  bool orthographic_ = false;
   double epsilon_ = 0;  // offset of spawned rays, relative to the universe size
   bool crowded_voxels_ = false;  // the walk must watch for crowded voxels
 };

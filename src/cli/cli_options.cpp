@@ -90,6 +90,10 @@ void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
              "colours / 255, 0 to 3",
              decimal_number(0, 3).description("a number from 0 to 3"))
       ->default_val("0.3");
+  add_openscad_options(cmd, o.openscad);
+  accepts(cmd.add_flag("--verbose", o.verbose,
+                       "Print the camera used, as OpenSCAD options that give the same view (docs/openscad.md)"),
+          flag_values());
 }
 
 TracerSettings check_tracer_options(const TracerOptions& o) {
@@ -110,6 +114,14 @@ TracerSettings check_tracer_options(const TracerOptions& o) {
     throw UsageError(fmt::format("-o/--output is required (accepted: {})", accepted_values(*o.output.option)));
   s.output = checked(o.output);
   if (!o.size.text.empty()) std::tie(s.prepare.width, s.prepare.height) = pair_value(checked(o.size));
+  if (const auto imgsize = check_imgsize(o.openscad)) {
+    if (!o.size.text.empty() && *imgsize != std::pair{s.prepare.width, s.prepare.height})
+      throw UsageError(fmt::format("--size {} and --imgsize {} give different image sizes; give one of them",
+                                   o.size.text, o.openscad.imgsize.text));
+    std::tie(s.prepare.width, s.prepare.height) = *imgsize;
+  }
+  s.prepare.openscad = check_openscad_camera(o.openscad);
+  s.verbose = o.verbose;
   if (const std::string& grid = checked(o.grid); grid != "auto") s.prepare.grid = whole_value(grid);
   s.threads = whole_value(checked(o.threads));
   if (!o.max_memory.text.empty()) s.max_memory = byte_size_value(checked(o.max_memory));
@@ -162,6 +174,23 @@ std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed
   for (Scene& scene : scenes) prepared.push_back(prepare_scene(std::move(scene), prepare));
   frame_sequence(prepared);
   return prepared;
+}
+
+void print_cameras(const TracerSettings& s, const std::vector<PreparedScene>& frames) {
+  if (!s.verbose) return;
+  for (std::size_t k = 0; k < frames.size(); ++k) {
+    const Camera& c = frames[k].camera;
+    const std::string args = camera_arguments(c);
+    if (k > 0 && args == camera_arguments(frames[k - 1].camera) && c.fov_deg == frames[k - 1].camera.fov_deg)
+      continue;
+    const std::string frame = frames.size() > 1 ? fmt::format(" (frame {})", k) : "";
+    fmt::print(stderr, "camera{}: {}\n", frame, args);
+    if (!expressible_as_openscad(c))
+      fmt::print(stderr,
+                 "camera{}: a {:g} degree field with up [{:g}, {:g}, {:g}]; OpenSCAD's --camera sees from the same "
+                 "eye and centre with a {:g} degree field and z up\n",
+                 frame, c.fov_deg, c.up.x, c.up.y, c.up.z, kOpenScadFov);
+  }
 }
 
 double animation_time(int k, int frames) { return k * (1.0 / frames); }

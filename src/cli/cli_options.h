@@ -5,6 +5,7 @@
 #include "capsim/antialias.h"
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"
+#include "cli/openscad_options.h"
 #include "cli/option_checks.h"
 
 #include <CLI/CLI.hpp>
@@ -37,6 +38,8 @@ struct TracerOptions {
   bool primary_only = false;
   OptionText<> aa{"0"};              // antialiasing levels
   OptionText<> aa_threshold{"0.3"};  // colour difference that splits a square
+  OpenScadOptions openscad;          // OpenSCAD's view options
+  bool verbose = false;              // print the camera each frame is seen by
 };
 
 // The options checked and parsed.
@@ -50,7 +53,8 @@ struct TracerSettings {
   // sequence of files and for any --frames.
   bool numbered_outputs() const { return animate || frames > 1; }
   std::string output;
-  PrepareOptions prepare;  // size (0x0 = the scene camera's) and grid (0 = auto)
+  PrepareOptions prepare;  // size (0x0 = the scene camera's), grid (0 = auto), OpenSCAD's camera
+  bool verbose = false;
   int threads = 0;
   std::uint64_t max_memory = 0;  // 0 = process_memory_limits()
   TraceOptions trace;
@@ -90,6 +94,10 @@ TracerSettings check_tracer_options(const TracerOptions& o);
 // frame gets the first one's image size, and frames without a camera statement
 // share the camera that frames all of them (frame_sequence).
 std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need);
+
+// With --verbose, the camera of each frame on stderr as OpenSCAD options
+// ("camera: --camera=... --projection=..."): once when all frames share it.
+void print_cameras(const TracerSettings& s, const std::vector<PreparedScene>& frames);
 
 // The value of $t in frame k of an animation of `frames` frames, computed as
 // OpenSCAD's --animate computes it: k * (1.0 / frames).

@@ -35,6 +35,7 @@ Command add_render_command(CLI::App& app) {
                             : Framebuffer::bytes(size.width, size.height) + (aa.depth > 0 ? pixels * sizeof(float) : 0) +
                                   write_image_memory(".exr", size.width, size.height, aa.depth > 0 ? 1 : 0));
     });
+    print_cameras(settings, scenes);
     const int width = scenes[0].camera.width, height = scenes[0].camera.height;
     Progress progress(frames == 1 ? "rendering" : "frames", frames == 1 ? render_work(width, height, aa) : frames,
                       Progress::stderr_is_terminal());

@@ -173,6 +173,7 @@ Command add_simulate_command(CLI::App& app) {
     const std::vector<PreparedScene> scenes = load_scenes(settings, [config](ImageSize size, int count) {
       return sim::simulation_memory_until_written(config, size.width, size.height, count);
     });
+    print_cameras(settings, scenes);
     std::vector<std::unique_ptr<Tracer>> tracers;
     std::vector<const Tracer*> frame_tracers;
     for (const PreparedScene& scene : scenes) {

@@ -38,6 +38,10 @@ Aabb object_bounds(PrimitiveKind kind) {
   return {};
 }
 
+const char* to_string(Projection projection) {
+  return projection == Projection::Orthographic ? "ortho" : "perspective";
+}
+
 const char* to_string(CsgOp op) {
   switch (op) {
     case CsgOp::Union: return "union";

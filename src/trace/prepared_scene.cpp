@@ -1,5 +1,6 @@
 #include "capsim/prepared_scene.h"
 
+#include "capsim/csg_bounds.h"
 #include "capsim/scene_range.h"
 
 #include <fmt/core.h>
@@ -20,7 +21,32 @@ SourceLoc scene_start(const Scene& scene) {
   return loc;
 }
 
+// The camera a framed view gets (OpenSCAD's options', or the default) at the
+// scene's image size, checked to stay within the range capsim traces.
+Camera framing_camera(const PreparedScene& ps, const Aabb& bounds) {
+  const int width = ps.camera.width, height = ps.camera.height;
+  if (!ps.openscad) return default_camera(bounds, width, height);
+  const Camera cam = openscad_camera(*ps.openscad, bounds, width, height);
+  const glm::dvec3 extent = ps.grid.universe.extent();
+  const double size = std::max({extent.x, extent.y, extent.z});
+  const double reach = std::max({std::abs(cam.eye.x), std::abs(cam.eye.y), std::abs(cam.eye.z)});
+  static_assert(kMaxSceneRatio == 1e6, "the message names the ratio");
+  if (!(reach <= size * kMaxSceneRatio))
+    throw std::invalid_argument(fmt::format("--camera puts the eye {:g} from the origin, more than 1e6 times the "
+                                            "scene's size {:g}, the farthest capsim traces from",
+                                            reach, size));
+  return cam;
+}
+
 }  // namespace
+
+Aabb framed_bounds(const PreparedScene& ps) {
+  const Aabb universe = universe_of(ps.prims, ps.placed);
+  if (!ps.openscad) return universe;
+  const Aabb b = openscad_preview_bounds(ps.scene.root, ps.prims);
+  // Nothing drawn positively (boxes that do not meet): framed by every solid.
+  return b.empty() ? universe : b;
+}
 
 Camera default_camera(const Aabb& bounds, int width, int height) {
   Camera cam;
@@ -84,26 +110,25 @@ PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   }
 
   const ImageSize size = image_size(scene, options);
-  if (scene.camera) {
-    ps.camera = *scene.camera;
-    ps.camera.width = size.width;
-    ps.camera.height = size.height;
-  } else {
-    ps.camera = default_camera(universe, size.width, size.height);
-  }
-  ps.lights = scene.lights;
-  if (ps.lights.empty()) ps.lights.push_back({ps.camera.eye, glm::dvec3(1)});
+  const bool framed = options.openscad || !scene.camera;
+  if (!framed) ps.camera = *scene.camera;
+  ps.camera.width = size.width;
+  ps.camera.height = size.height;
+  ps.openscad = options.openscad;
   ps.scene = std::move(scene);
+  if (framed) ps.camera = framing_camera(ps, framed_bounds(ps));
+  ps.lights = ps.scene.lights;
+  if (ps.lights.empty()) ps.lights.push_back({ps.camera.eye, glm::dvec3(1)});
   return ps;
 }
 
 void frame_sequence(std::vector<PreparedScene>& frames) {
   if (frames.size() < 2) return;
   Aabb bounds;
-  for (const PreparedScene& f : frames) bounds.extend(universe_of(f.prims, f.placed));
+  for (const PreparedScene& f : frames) bounds.extend(framed_bounds(f));
   for (PreparedScene& f : frames) {
-    if (f.scene.camera) continue;
-    f.camera = default_camera(bounds, f.camera.width, f.camera.height);
+    if (f.scene.camera && !f.openscad) continue;
+    f.camera = framing_camera(f, bounds);
     if (f.scene.lights.empty()) f.lights = {{f.camera.eye, glm::dvec3(1)}};
   }
 }

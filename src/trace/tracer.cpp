@@ -129,6 +129,8 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   cam_right_ = glm::normalize(glm::cross(cam_forward_, c.up));
   cam_up_ = glm::cross(cam_right_, cam_forward_);
   half_height_ = std::tan(0.5 * c.fov_deg * std::acos(-1.0) / 180.0);
+  orthographic_ = c.projection == Projection::Orthographic;
+  if (orthographic_) half_height_ *= glm::length(c.center - c.eye);
   half_width_ = half_height_ * static_cast<double>(c.width) / c.height;
   epsilon_ = scene_epsilon(scene);
   crowded_voxels_ = scene.grid.largest_voxel > kCrowdedVoxel;
@@ -139,8 +141,13 @@ Ray Tracer::screen_ray(double u, double v) const {
   const double px = (2.0 * u / c.width - 1.0) * half_width_;
   const double py = (1.0 - 2.0 * v / c.height) * half_height_;
   Ray r;
-  r.origin = cam_origin_;
-  r.dir = glm::normalize(cam_forward_ + px * cam_right_ + py * cam_up_);
+  if (orthographic_) {
+    r.origin = cam_origin_ + px * cam_right_ + py * cam_up_;
+    r.dir = cam_forward_;
+  } else {
+    r.origin = cam_origin_;
+    r.dir = glm::normalize(cam_forward_ + px * cam_right_ + py * cam_up_);
+  }
   return r;
 }
 
