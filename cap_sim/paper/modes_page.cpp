@@ -52,10 +52,14 @@ std::string moved_table(const std::vector<MovedFigure>& moved) {
          rows + "</tbody>\n</table></div>\n";
 }
 
-// What the page says about the baseline: matched, moved, or rewritten.
-std::string baseline_text(const BaselineOutcome& o, std::size_t runs) {
+// What the page says about the baseline: none, matched, moved, or rewritten.
+std::string baseline_text(const ModesBench& b, const BaselineOutcome& o) {
+  const std::size_t runs = b.runs.size();
   const std::string path = "<code>" + html_escape(o.path) + "</code>";
   const std::string count = fmt::format("{} figure{}", o.moved.size(), o.moved.size() == 1 ? "" : "s");
+  if (!o.rewritten && !o.existed)
+    return fmt::format("<p id=\"baseline\" class=\"baseline none\">No baseline for {}x{}: not compared.</p>\n",
+                       b.options.width, b.options.height);
   if (o.rewritten) {
     if (!o.existed)
       return fmt::format("<p id=\"baseline\" class=\"baseline rewritten\">The baseline {} was written from this run "
@@ -81,8 +85,8 @@ std::string baseline_text(const BaselineOutcome& o, std::size_t runs) {
                        "identical, to the cycle.</p>\n",
                        path, runs);
   return fmt::format("<p id=\"baseline\" class=\"baseline moved\">Differs from the baseline {}: {} moved, old "
-                     "beside new with their ratio. If the change is intended, rerun with --update and commit the "
-                     "baseline with it, saying why.</p>\n{}",
+                     "beside new with their ratio. If the change is intended, rerun with --update --baseline "
+                     "naming it and commit the baseline with it, saying why.</p>\n{}",
                      path, count, moved_table(o.moved));
 }
 
@@ -100,7 +104,7 @@ std::string header_section(const ModesBench& b, const nlohmann::json& summary, c
       "<nav><a href=\"#reading\">Reading the page</a> <a href=\"#plots\">Plots</a> <a href=\"#runs\">Every run</a>"
       "</nav>\n</header>\n",
       summary.at("size").get<std::string>(), html_escape(summary.at("profile").get<std::string>()), b.runs.size(),
-      html_escape(joined(models)), joined(modes), joined(grids), joined(aa), baseline_text(o, b.runs.size()));
+      html_escape(joined(models)), joined(modes), joined(grids), joined(aa), baseline_text(b, o));
 }
 
 std::string reading_section(const ModesBench& b) {

@@ -21,9 +21,10 @@ namespace capsim::sim {
 
 // How the run stood against its stored baseline.
 struct BaselineOutcome {
-  std::string path;               // the baseline file as named
+  std::string path;               // the baseline file as named; empty when there is none
   bool rewritten = false;         // --update: the file now holds this run
-  bool existed = true;            // false: there was none before (only with rewritten)
+  bool existed = true;            // false: there was none before (then rewritten: written now; else: the
+                                  // run was not compared)
   std::string not_comparable;     // why the old baseline could not be compared (another screen or
                                   // profile); empty when it could
   std::vector<MovedFigure> moved;  // what differs from the old baseline, in compare_modes_bench's order

@@ -1,11 +1,13 @@
 // `capsim bench modes`: the regression benchmarks of the pixel modes, compared
-// exactly with a stored baseline (docs/benchmarks.md).
+// exactly with a stored baseline (docs/benchmarks.md): --baseline FILE, or the
+// shipped one for the screen (shipped_data.h), or none.
 
 #include "capsim/prepared_scene.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/cli_usage.h"
+#include "cli/shipped_data.h"
 #include "paper/modes_bench.h"
 #include "paper/modes_page.h"
 #include "report/text_output.h"
@@ -15,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -26,8 +29,8 @@ namespace {
 
 struct BenchOptions {
   OptionText<> size{"512x512"};
-  OptionText<> scenes{"scenes"};
-  std::string baseline;  // default: bench/baselines/modes[-WxH].json
+  OptionText<> scenes;    // default: the shipped models, found
+  std::string baseline;  // default: the shipped modes[-WxH].json, found; none at other sizes
   std::string json;
   OptionText<> plot;
   std::string html;
@@ -47,19 +50,30 @@ nlohmann::json read_json(const std::string& path) {
   }
 }
 
+// The shipped baseline for a screen (modes.json at 512x512, modes-WxH.json at
+// others), if there is one.
+std::string shipped_baseline(int width, int height) {
+  const std::optional<std::string> dir = find_shipped_data(ShippedData::Baselines);
+  if (!dir) return "";
+  const std::filesystem::path file =
+      std::filesystem::path(*dir) /
+      (width == 512 && height == 512 ? std::string("modes.json") : fmt::format("modes-{}x{}.json", width, height));
+  return std::filesystem::is_regular_file(file) ? file.string() : "";
+}
+
 int run_modes(const BenchOptions& o) {
   sim::ModesBenchOptions options;
   std::tie(options.width, options.height) = pair_value(checked(o.size));
   options.threads = whole_value(checked(o.threads));
-  options.scenes_dir = checked(o.scenes);
-  const std::string baseline =
-      !o.baseline.empty() ? o.baseline
-      : (options.width == 512 && options.height == 512)
-          ? std::string("bench/baselines/modes.json")
-          : fmt::format("bench/baselines/modes-{}x{}.json", options.width, options.height);
+  options.scenes_dir = scenes_dir(o.scenes);
+  // --update writes only where --baseline says: never, unasked, into the
+  // source tree or an installed share directory.
+  if (o.update && o.baseline.empty())
+    throw UsageError("--update needs --baseline FILE, the baseline to write");
+  const std::string baseline = !o.baseline.empty() ? o.baseline : shipped_baseline(options.width, options.height);
   if (!o.plot.text.empty()) checked(o.plot);
-  const bool have_baseline = std::filesystem::exists(baseline);
-  if (!o.update && !have_baseline)
+  const bool have_baseline = !baseline.empty() && std::filesystem::exists(baseline);
+  if (!o.update && !o.baseline.empty() && !have_baseline)
     throw UsageError(fmt::format("--baseline {}: no such file (write one with --update)", shown(baseline)));
   const nlohmann::json old = have_baseline ? read_json(baseline) : nlohmann::json();
   // The baseline is read above and replaced, when --update asks, only once
@@ -111,14 +125,18 @@ int run_modes(const BenchOptions& o) {
     }
     return 0;
   }
+  if (!have_baseline) {
+    fmt::print("no baseline for {}x{}: not compared\n", options.width, options.height);
+    return 0;
+  }
   if (!outcome.not_comparable.empty()) throw std::runtime_error(outcome.not_comparable);
   if (moved.empty()) {
     fmt::print("{}: all {} runs identical to the baseline\n", baseline, bench.runs.size());
     return 0;
   }
   fmt::print("{}: {} figures differ from the baseline:\n\n{}\nIf the change is intended, rerun with --update "
-             "and commit the baseline with it, saying why.\n",
-             baseline, moved.size(), sim::format_moved(moved));
+             "--baseline {} and commit the baseline with it, saying why.\n",
+             baseline, moved.size(), sim::format_moved(moved), baseline);
   return 1;
 }
 
@@ -133,11 +151,12 @@ Command add_bench_command(CLI::App& app) {
       "antialiased (--aa 2): frame time, Max, Min, d, speed-up against 4x4, bus and link traffic; compared "
       "exactly with a stored baseline (docs/benchmarks.md)");
   add_option(*modes, "--size", o->size, "Screen of every run, WxH", image_size_check())->default_val("512x512");
-  add_option(*modes, "--scenes", o->scenes, "Directory of the models", shipped_models_check())->default_val("scenes");
+  add_scenes_option(*modes, o->scenes);
   modes->add_option("--baseline", o->baseline,
-                    "Baseline to compare with (default: bench/baselines/modes.json at 512x512, "
-                    "bench/baselines/modes-WxH.json at other sizes)");
-  modes->add_flag("--update", o->update, "Rewrite the baseline with this run and print what moved");
+                    "Baseline to compare with (default: the shipped modes.json at 512x512, modes-WxH.json at other "
+                    "sizes, found as the models are; at a size without one, the run is not compared)");
+  modes->add_flag("--update", o->update,
+                  "Write this run to the --baseline FILE (required with it) and print what moved against it");
   modes->add_option("--json", o->json, "Also write the results as JSON to this file");
   add_option(*modes, "--plot", o->plot, "Also write a plot (.svg): d and speed-up against the cell count",
              satisfying([](const std::string& path) { return path.ends_with(".svg"); }, "does not end in .svg")

@@ -6,6 +6,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/shipped_data.h"
 #include "paper/calibrate.h"
 #include "paper/calibration.h"
 #include "report/text_output.h"
@@ -21,10 +22,10 @@ namespace capsim::cli {
 namespace {
 
 struct CalibrateCliOptions {
-  std::string profiles = "cap_sim/profiles";
+  std::string profiles = ".";  // the project's own: cap_sim/profiles
   std::string alternatives;  // empty = not run
   OptionText<> rounds{"3"};
-  OptionText<> scenes{"scenes"};
+  OptionText<> scenes;  // default: the shipped models, found (shipped_data.h)
   OptionText<> threads{"0"};
 };
 
@@ -35,25 +36,24 @@ Command add_calibrate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "calibrate",
       "Fit the costs the paper does not give to all its published times at once (Tables 4-2 to 4-5 and 5-1) and "
-      "write the cap and m380 profiles; run from the repository root");
-  cmd->add_option("--profiles", o->profiles, "Directory the fitted cap.json and m380.json are written to")
-      ->default_val("cap_sim/profiles");
+      "write the cap and m380 profiles");
+  cmd->add_option("--profiles", o->profiles,
+                  "Directory the fitted cap.json and m380.json are written to (the project's own: cap_sim/profiles)")
+      ->default_val(".");
   cmd->add_option("--alternatives", o->alternatives,
                   "Also calibrate under every alternative assumption (screens, primary rays, exclusions) and "
                   "write their errors here as a Markdown table");
   add_option(*cmd, "--rounds", o->rounds, "Fits, each followed by a run of every experiment",
              whole_number(1, 20).description("1 to 20"))
       ->default_val("3");
-  add_option(*cmd, "--scenes", o->scenes, "Directory of the models (balls.csg, chess.csg, ..., disb/)",
-             shipped_models_check())
-      ->default_val("scenes");
+  add_scenes_option(*cmd, o->scenes);
   add_option(*cmd, "--threads", o->threads, "Host threads (0 = all); the result does not depend on it",
              host_threads_check())
       ->default_val("0");
   return [o] {
     sim::CalibrationOptions options;
     options.rounds = static_cast<int>(whole_value(checked(o->rounds)));
-    options.repro.scenes_dir = checked(o->scenes);
+    options.repro.scenes_dir = scenes_dir(o->scenes);
     options.repro.threads = whole_value(checked(o->threads));
     const std::filesystem::path dir(o->profiles);
     std::vector<OutputOption> files = {{"--profiles (cap.json)", (dir / "cap.json").string()},

@@ -1,10 +1,12 @@
 // `capsim repro`: every experiment of the paper beside its published figures,
-// written as docs/reproduction.md with its plots.
+// written as a Markdown report (reproduction.md in the current directory by
+// default; the project's own is docs/reproduction.md) with its plots.
 
 #include "capsim/prepared_scene.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/shipped_data.h"
 #include "paper/published_figures.h"
 #include "paper/repro.h"
 #include "report/text_output.h"
@@ -13,6 +15,8 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
+#include <system_error>
 #include <tuple>
 #include <stdexcept>
 
@@ -21,15 +25,37 @@ namespace capsim::cli {
 namespace {
 
 struct ReproCliOptions {
-  std::string output = "docs/reproduction.md";
-  std::string images;  // default: images/ beside the output
+  std::string output = "reproduction.md";
+  std::string images;  // default: images/ beside the output, made if missing
   std::string json;    // every compared figure; empty = not written
   OptionText<> size;   // both screens
   OptionText<> cap_size{"384x384"};
   OptionText<> m380_size{"512x512"};
-  OptionText<> scenes{"scenes"};
+  OptionText<> scenes;  // default: the shipped models, found (shipped_data.h)
   OptionText<> threads{"0"};
   OptionText<> frames{"64"};
+};
+
+// The default images directory (images/ beside the report), made when it is
+// missing so that a report can be written in any directory; removed again,
+// if still empty, when the command fails before putting its files in place.
+class MadeDirectory {
+ public:
+  explicit MadeDirectory(const std::filesystem::path& dir) : dir_(dir) {
+    std::error_code ec;
+    made_ = std::filesystem::create_directory(dir_, ec) && !ec;  // else the outputs' check reports it
+  }
+  MadeDirectory(const MadeDirectory&) = delete;
+  MadeDirectory& operator=(const MadeDirectory&) = delete;
+  ~MadeDirectory() {
+    std::error_code ec;
+    if (made_ && !kept_) std::filesystem::remove(dir_, ec);
+  }
+  void keep() { kept_ = true; }
+
+ private:
+  std::filesystem::path dir_;
+  bool made_ = false, kept_ = false;
 };
 
 }  // namespace
@@ -41,10 +67,11 @@ Command add_repro_command(CLI::App& app) {
       "Run every experiment of the paper (Tables 4-2 to 4-5 and 5-1, Graph 4-3) and write them beside the "
       "published figures, with the fit of the cost constants, as a Markdown report with SVG plots");
   // Its usage errors quote what an image --output accepts, as they always have.
-  accepts(cmd->add_option("-o,--output", o->output, "The report")->default_val("docs/reproduction.md"),
+  accepts(cmd->add_option("-o,--output", o->output, "The report")->default_val("reproduction.md"),
           CLI::Validator(image_output_check().get_description()));
   cmd->add_option("--images", o->images,
-                  "Directory for the plots table-4-2.svg and graph-4-3.svg (default: images/ beside the report)");
+                  "Directory for the plots table-4-2.svg and graph-4-3.svg (default: images/ beside the report, "
+                  "made if missing)");
   cmd->add_option("--json", o->json,
                   "Also write every compared figure, the per-table errors and the assumptions as JSON");
   add_option(*cmd, "--cap-size", o->cap_size,
@@ -55,9 +82,7 @@ Command add_repro_command(CLI::App& app) {
       ->default_val("512x512");
   add_option(*cmd, "--size", o->size, "Screen of every run, WxH (sets --cap-size and --m380-size)",
              image_size_check());
-  add_option(*cmd, "--scenes", o->scenes, "Directory of the models (balls.csg, chess.csg, ..., disb/)",
-             shipped_models_check())
-      ->default_val("scenes");
+  add_scenes_option(*cmd, o->scenes);
   add_option(*cmd, "--disb-frames", o->frames, "DISB frames to run for Table 4-5, 0 to 64 (0: leave it not run)",
              whole_number(0, 64).description("0 to 64; 0 = leave Table 4-5 not run"))
       ->default_val("64");
@@ -74,7 +99,7 @@ Command add_repro_command(CLI::App& app) {
     }
     options.threads = whole_value(checked(o->threads));
     options.table_4_5_frames = whole_value(checked(o->frames));
-    options.scenes_dir = checked(o->scenes);
+    options.scenes_dir = scenes_dir(o->scenes);
     const std::filesystem::path report(o->output);
     const std::filesystem::path images =
         o->images.empty() ? report.parent_path() / "images" : std::filesystem::path(o->images);
@@ -83,6 +108,8 @@ Command add_repro_command(CLI::App& app) {
         {"--images (table-4-2.svg)", (images / "table-4-2.svg").string()},
         {"--images (graph-4-3.svg)", (images / "graph-4-3.svg").string()}};
     if (!o->json.empty()) files.push_back({"--json", o->json});
+    std::optional<MadeDirectory> made;
+    if (o->images.empty()) made.emplace(images);
     StagedOutputs outputs(files, {});
 
     const ElapsedLog log;
@@ -99,6 +126,7 @@ Command add_repro_command(CLI::App& app) {
       sim::write_text_file(outputs["--json"],
                            sim::reproduction_json(result, sim::compared_figures(result, sim::Exclusions::Table44ChessCad)));
     outputs.commit();
+    if (made) made->keep();
     fmt::print("{}: written ({:.1f} s)\n", o->output, log.seconds());
     for (const sim::TargetCheck& c : sim::reproduction_targets(result))
       fmt::print("  {}: {}\n", c.met ? "met   " : "MISSED", c.target);

@@ -188,7 +188,9 @@ INSTANTIATE_TEST_SUITE_P(
                   "capsim bench modes: --plot OUT.png does not end in .svg (accepted: a path ending in .svg)"},
         UsageCase{"bench modes --scenes SCENES --baseline OUT.json",
                   "capsim bench modes: --baseline OUT.json: no such file (write one with --update)"},
-        UsageCase{"bench modes --scenes SCENES --update --json OUT/none/a.json",
+        UsageCase{"bench modes --scenes SCENES --update",
+                  "capsim bench modes: --update needs --baseline FILE, the baseline to write"},
+        UsageCase{"bench modes --scenes SCENES --update --baseline OUT.json --json OUT/none/a.json",
                   "capsim bench modes: --json OUT/none/a.json: directory OUT/none does not exist"}),
     case_name);
 

@@ -209,6 +209,11 @@ TEST_F(ModesPage, ListsTheMovedFiguresOldNewAndRatio) {
   EXPECT_NE(modes_page(bench(), o, "0.1.0").find("nothing moved against the old one"), std::string::npos);
   o.existed = false;
   EXPECT_NE(modes_page(bench(), o, "0.1.0").find("was written from this run (120 runs)"), std::string::npos);
+  // No baseline for the screen: the run stands alone.
+  o = BaselineOutcome{"", false, false, "", {}};
+  EXPECT_NE(between(modes_page(bench(), o, "0.1.0"), "<header>", "</header>")
+                .find("<p id=\"baseline\" class=\"baseline none\">No baseline for 16x16: not compared.</p>"),
+            std::string::npos);
   o = matched();
   o.not_comparable = "the baseline's size is \"48x48\" where this run's is \"16x16\"";
   EXPECT_NE(modes_page(bench(), o, "0.1.0")

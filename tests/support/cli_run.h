@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -50,12 +51,15 @@ class TempDir {
   std::filesystem::path path_;
 };
 
-// args are passed through the shell as written; quote paths with spaces.
-// shell_setup, if given, runs in that shell first (e.g. "ulimit -f 2;"), and
-// capsim then replaces the shell, so a signal that ends it is reported.
-inline RunResult run_capsim(const std::string& args, const TempDir& dir, const std::string& shell_setup = "") {
+// Runs program (a capsim binary) with args, its output captured in dir's
+// .stdout and .stderr, which are removed again. args are passed through the
+// shell as written; quote paths with spaces. shell_setup, if given, runs in
+// that shell first (e.g. "ulimit -f 2;"), and the program then replaces the
+// shell, so a signal that ends it is reported.
+inline RunResult run_program(const std::string& program, const std::string& args, const TempDir& dir,
+                             const std::string& shell_setup = "") {
   const std::string out = dir / ".stdout", err = dir / ".stderr";
-  const std::string cmd = shell_setup + " exec " + CAPSIM_EXE + " " + args + " >" + out + " 2>" + err;
+  const std::string cmd = shell_setup + " exec " + program + " " + args + " >" + out + " 2>" + err;
   const int raw = std::system(cmd.c_str());
   RunResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -65,6 +69,25 @@ inline RunResult run_capsim(const std::string& args, const TempDir& dir, const s
   std::filesystem::remove(out);
   std::filesystem::remove(err);
   return r;
+}
+
+// The build's capsim, as run_program runs it.
+inline RunResult run_capsim(const std::string& args, const TempDir& dir, const std::string& shell_setup = "") {
+  return run_program(CAPSIM_EXE, args, dir, shell_setup);
+}
+
+// The same, with `cwd` as its current directory.
+inline RunResult run_program_in(const std::filesystem::path& cwd, const std::string& program,
+                                const std::string& args, const TempDir& dir) {
+  return run_program(program, args, dir, "cd '" + cwd.string() + "' &&");
+}
+
+// Every file and directory under dir, as paths relative to it, in order.
+inline std::set<std::string> files_under(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(dir))
+    names.insert(entry.path().lexically_relative(dir).generic_string());
+  return names;
 }
 
 inline std::string scene_path(const std::string& name) {
