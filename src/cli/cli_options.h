@@ -37,6 +37,7 @@ struct TracerOptions {
   bool primary_only = false;
   OptionText<> aa{"0"};              // antialiasing levels
   OptionText<> aa_threshold{"0.3"};  // colour difference that splits a square
+  OptionText<std::vector<std::string>> defines;  // -D var=value, for OpenSCAD
 };
 
 // The options checked and parsed.
@@ -55,6 +56,7 @@ struct TracerSettings {
   std::uint64_t max_memory = 0;  // 0 = process_memory_limits()
   TraceOptions trace;
   AntialiasOptions aa;
+  std::vector<std::string> defines;  // -D var=value, passed to openscad for .scad input
 };
 
 // The memory a command's image buffers take for `frames` frames of an image size.
