@@ -107,13 +107,31 @@ std::vector<UnitMemory> unit_memories(const std::vector<SceneFootprint>& frames,
   return units_of(frames, config, unit_frames(config), video);
 }
 
+namespace {
+
+// What can make a unit over the cell memory fit. A coarser grid shrinks only
+// the voxel data: when the program and the scenes alone are over, it cannot.
+std::string cell_memory_advice(const UnitMemory& u, const CostProfile& profile) {
+  const unsigned __int128 without_grid = static_cast<unsigned __int128>(profile.program_bytes) + u.scene_bytes;
+  if (without_grid <= profile.cell_memory_bytes) return "try a coarser --grid";
+  return fmt::format(
+      "the program and the scene{} alone need {} bytes, without any voxel grid, so a coarser --grid cannot "
+      "help; {}use a profile with more cell memory (--profile){}",
+      u.frames == 1 ? "" : "s of its frames", static_cast<std::uint64_t>(without_grid),
+      u.frames == 1 ? "" : "put fewer frames in a unit, ",
+      u.frames == 1 ? " or a scene of fewer primitives" : "");
+}
+
+}  // namespace
+
 void check_unit_memory(const UnitMemory& u, const CostProfile& profile) {
   if (u.cell_memory > profile.cell_memory_bytes)
     throw std::runtime_error(fmt::format(
         "{} does not fit a cell's memory: it needs {} bytes (program {} + scene {} + voxel data {}{}) but a "
-        "cell of profile '{}' has {} bytes; try a coarser --grid",
+        "cell of profile '{}' has {} bytes; {}",
         unit_name(u), u.cell_memory, profile.program_bytes, u.scene_bytes, u.voxel_bytes,
-        u.frames == 1 ? "" : fmt::format(", its {} frames", u.frames), profile.name, profile.cell_memory_bytes));
+        u.frames == 1 ? "" : fmt::format(", its {} frames", u.frames), profile.name, profile.cell_memory_bytes,
+        cell_memory_advice(u, profile)));
   if (u.video_memory > profile.video_memory_bytes)
     throw std::runtime_error(fmt::format(
         "{} does not fit a cell's video memory: a cell needs {} bytes for its pixels{} but a cell of profile "

@@ -4,6 +4,16 @@
 #include <fmt/ranges.h>
 
 namespace capsim::sim {
+namespace {
+
+// `text` as one shell word, taken verbatim: inside single quotes, each ' as '\''.
+std::string single_quoted(const std::string& text) {
+  std::string out = "'";
+  for (const char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+}  // namespace
 
 std::string simulate_command(const SimulateSettings& s, CommandForm form) {
   const bool every = form == CommandForm::EveryOption;
@@ -25,6 +35,7 @@ std::string simulate_command(const SimulateSettings& s, CommandForm form) {
   }
   if (s.frame_average) cmd += " --frame-average";
   if (every || s.threads != defaults.threads) cmd += fmt::format(" --threads {}", s.threads);
+  for (const std::string& d : s.defines) cmd += " -D " + single_quoted(d);
   return cmd;
 }
 

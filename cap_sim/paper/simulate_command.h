@@ -27,6 +27,7 @@ struct SimulateSettings {
   AntialiasOptions aa;  // --aa and --aa-threshold
   bool frame_average = false;
   int threads = 0;  // host threads; 0 = all hardware threads
+  std::vector<std::string> defines;  // -D var=value for .scad input, in order
 };
 
 enum class CommandForm {
@@ -37,7 +38,8 @@ enum class CommandForm {
 // "capsim simulate SCENES -o OUTPUT ..." for the run: --size when the
 // settings give one, --frames when given, each flag that is set and, with
 // antialiasing, its depth and threshold (the threshold in NonDefaults only if
-// not the default); the other options as `form` asks.
+// not the default), each -D in single quotes as a shell takes it verbatim;
+// the other options as `form` asks.
 std::string simulate_command(const SimulateSettings& settings, CommandForm form);
 
 }  // namespace capsim::sim

@@ -15,13 +15,20 @@ namespace capsim {
 // about 100 bytes per byte of file while reading (a token, and a value or a
 // call, for every few bytes), and about 1.7 KB per primitive through
 // preparation (docs/scene-format.md gives the measurements).
+inline constexpr std::size_t kMaxListedSceneErrors = 50;
+
 struct ParseLimits {
   std::size_t max_file_bytes = std::size_t{32} << 20;  // 32 MiB
   std::size_t max_primitives = 1'000'000;              // dropped ones ('%', '*') included
 };
 
 // Throws SceneError ("FILE:LINE:COL: message") on any input outside the supported
-// subset and on every bad value; never returns a partial scene. A file past the
+// subset and on every bad value; never returns a partial scene. Modules outside
+// the subset are all reported at once, in file order, up to
+// kMaxListedSceneErrors of them: the error is the first's, and its message
+// goes on with a line "FILE:LINE:COL: message" for each other (then "and N
+// more errors"), ending with the first other error if one follows them.
+// Any other error is reported alone. A file past the
 // size limit is refused as a whole ("FILE: message") before it is parsed, a
 // primitive past the limit where it stands.
 // `t` is the value of OpenSCAD's $t in the scene's expressions (the

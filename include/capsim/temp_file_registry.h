@@ -8,7 +8,11 @@
 //
 // The handler is async-signal-safe: the registry is a fixed array of path
 // buffers, each guarded by a lock-free atomic state, and the handler only reads
-// them and calls unlink(2) and raise(3).
+// them and calls unlink(2), rmdir(2) and raise(3).
+//
+// A private temporary directory may be registered too: the handler removes
+// the registered files first, then the directories, which are then empty if
+// every file in them was registered.
 
 #include <string>
 

@@ -4,6 +4,7 @@
 #include "capsim/memory_limit.h"
 #include "capsim/parser.h"
 #include "cli/cli_usage.h"
+#include "cli/scad_export.h"
 
 #include <fmt/core.h>
 
@@ -94,6 +95,11 @@ void add_tracer_options(CLI::App& cmd, TracerOptions& o) {
   accepts(cmd.add_flag("--verbose", o.verbose,
                        "Print the camera used, as OpenSCAD options that give the same view (docs/openscad.md)"),
           flag_values());
+  add_option(cmd, "-D", o.defines,
+             "For .scad input: an OpenSCAD variable assignment var=value, passed to openscad as its -D "
+             "(repeatable; docs/scene-format.md)",
+             CLI::Validator("var=value, as OpenSCAD's -D takes it"))
+      ->allow_extra_args(false);
 }
 
 TracerSettings check_tracer_options(const TracerOptions& o) {
@@ -128,10 +134,61 @@ TracerSettings check_tracer_options(const TracerOptions& o) {
   s.trace.primary_only = o.primary_only;
   s.aa.depth = whole_value(checked(o.aa));
   s.aa.threshold = number_value(checked(o.aa_threshold));
+  s.defines = o.defines.text;
+  if (!s.defines.empty()) {
+    for (const std::string& scene : s.scenes) {
+      if (!is_scad_file(scene))
+        throw UsageError(fmt::format("-D sets a variable of an OpenSCAD program and applies only to .scad input; "
+                                     "{} is not a .scad file (the CSG tree of a .csg holds no variables to set)",
+                                     scene));
+    }
+  }
   return s;
 }
 
 namespace {
+
+// A scene OpenSCAD exported: its errors are the export's, and say so.
+Scene parse_export(const std::string& csg, const std::string& scad) {
+  try {
+    return parse_scene_file(csg);
+  } catch (const SceneError& e) {
+    throw SceneError(e.loc(), fmt::format("{}\n{}: the errors above are in OpenSCAD's CSG export of it, removed "
+                                          "after the run ('openscad -o model.csg {}' writes it to read)",
+                                          e.message(), scad, scad));
+  }
+}
+
+// The scenes of the run's frames. A .scad file is exported by OpenSCAD (with
+// --frames, by its --animate) and its export read; any other file is read by
+// capsim itself (with --frames, once, its text parsed at each frame's $t).
+std::vector<Scene> read_scenes(const TracerSettings& s) {
+  std::vector<Scene> scenes;
+  scenes.reserve(static_cast<std::size_t>(s.frames));
+  ScadExports exports(s.defines);  // removed once the scenes are read
+  if (s.animate && is_scad_file(s.scenes[0])) {
+    const std::string& scad = s.scenes[0];
+    const std::string stem = std::filesystem::path(scad).stem().string();
+    for (const std::string& csg : exports.export_csg(scad, stem, s.frames)) scenes.push_back(parse_export(csg, scad));
+  } else if (s.animate) {
+    // Read once: every frame sees the same text.
+    const std::string text = read_scene_file(s.scenes[0]);
+    for (int k = 0; k < s.frames; ++k) scenes.push_back(parse_scene(text, s.scenes[0], {}, animation_time(k, s.frames)));
+  } else {
+    for (std::size_t i = 0; i < s.scenes.size(); ++i) {
+      const std::string& file = s.scenes[i];
+      if (!is_scad_file(file)) {
+        scenes.push_back(parse_scene_file(file));
+        continue;
+      }
+      // Numbered, as a sequence may hold two files of the same name.
+      const std::string stem = std::filesystem::path(file).stem().string();
+      const std::string name = s.scenes.size() == 1 ? stem : fmt::format("{:05d}-{}", i, stem);
+      scenes.push_back(parse_export(exports.export_csg(file, name).front(), file));
+    }
+  }
+  return scenes;
+}
 
 // Refuses an image whose buffers would not fit, before any of them is allocated.
 void check_memory(const TracerSettings& s, ImageSize size, const MemoryNeed& need, int frames) {
@@ -154,15 +211,7 @@ void check_memory(const TracerSettings& s, ImageSize size, const MemoryNeed& nee
 }  // namespace
 
 std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need) {
-  std::vector<Scene> scenes;
-  scenes.reserve(s.scenes.size());
-  if (s.animate) {
-    // Read once: every frame sees the same text.
-    const std::string text = read_scene_file(s.scenes[0]);
-    for (int k = 0; k < s.frames; ++k) scenes.push_back(parse_scene(text, s.scenes[0], {}, animation_time(k, s.frames)));
-  } else {
-    for (const std::string& file : s.scenes) scenes.push_back(parse_scene_file(file));
-  }
+  std::vector<Scene> scenes = read_scenes(s);
   // Every frame takes the first one's size: --size, or the first camera's.
   const ImageSize size = image_size(scenes[0], s.prepare);
   check_memory(s, size, need, static_cast<int>(scenes.size()));

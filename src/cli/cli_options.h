@@ -40,6 +40,7 @@ struct TracerOptions {
   OptionText<> aa_threshold{"0.3"};  // colour difference that splits a square
   OpenScadOptions openscad;          // OpenSCAD's view options
   bool verbose = false;              // print the camera each frame is seen by
+  OptionText<std::vector<std::string>> defines;  // -D var=value, for OpenSCAD
 };
 
 // The options checked and parsed.
@@ -59,6 +60,7 @@ struct TracerSettings {
   std::uint64_t max_memory = 0;  // 0 = process_memory_limits()
   TraceOptions trace;
   AntialiasOptions aa;
+  std::vector<std::string> defines;  // -D var=value, passed to openscad for .scad input
 };
 
 // The memory a command's image buffers take for `frames` frames of an image size.

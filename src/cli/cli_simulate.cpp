@@ -58,6 +58,7 @@ sim::SimulateSettings run_settings(const TracerSettings& t, const sim::MachineCo
   s.aa = t.aa;
   s.frame_average = config.frame_average;
   s.threads = t.threads;
+  s.defines = t.defines;
   return s;
 }
 

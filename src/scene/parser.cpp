@@ -71,10 +71,10 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   return std::nullopt;
 }
 
-[[noreturn, gnu::noinline]] void refuse_module(const Call& call) {
+[[gnu::noinline]] SceneError module_error(const Call& call) {
   if (auto reason = unsupported_reason(call.name)) {
-    throw SceneError(call.loc, fmt::format("'{}' is not supported: {}; supported: {}", call.name,
-                                           *reason, kSupported));
+    return SceneError(call.loc, fmt::format("'{}' is not supported: {}; supported: {}", call.name,
+                                            *reason, kSupported));
   }
   std::vector<std::string> known;
   for (std::string_view n : {"sphere", "cube", "cylinder", "multmatrix", "translate", "rotate",
@@ -83,10 +83,19 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
     known.emplace_back(n);
   }
   std::string guess = scene_file::closest_name(call.name, known);
-  throw SceneError(
+  return SceneError(
       call.loc,
       fmt::format("unknown module '{}'{}; supported: {}", call.name,
                   guess.empty() ? "" : fmt::format(" (did you mean '{}'?)", guess), kSupported));
+}
+
+// One error for several, in file order: the first's place, and a message
+// that continues with each other error's own line, then "and N more errors".
+SceneError listed(const std::vector<SceneError>& errors, std::size_t unlisted) {
+  std::string message = errors.front().message();
+  for (std::size_t i = 1; i < errors.size(); ++i) message += fmt::format("\n{}", errors[i].what());
+  if (unlisted > 0) message += fmt::format("\nand {} more error{}", unlisted, unlisted == 1 ? "" : "s");
+  return SceneError(errors.front().loc(), message);
 }
 
 // What the enclosing calls hand down to a subtree.
@@ -109,7 +118,22 @@ class Interpreter {
   Interpreter(std::shared_ptr<const std::string> file, std::size_t max_primitives)
       : file_(std::move(file)), max_primitives_(max_primitives) {}
 
+  // Every module outside the subset is reported, in file order, with the
+  // first other error if one follows them (that one ends the walk).
   Scene run(std::span<const Call> calls, bool file_has_tokens, const Loc& end) {
+    std::optional<Scene> scene;
+    try {
+      scene = walk(calls, file_has_tokens, end);
+    } catch (const SceneError& e) {
+      if (module_errors_.empty()) throw;
+      note(e);
+    }
+    if (!module_errors_.empty()) throw listed(module_errors_, unlisted_errors_);
+    return std::move(*scene);
+  }
+
+ private:
+  Scene walk(std::span<const Call> calls, bool file_has_tokens, const Loc& end) {
     CsgNode root;
     root.op = CsgOp::Union;
     root.loc = SourceLoc{file_, 1, 1};
@@ -124,6 +148,7 @@ class Interpreter {
       ++objects;
       if (auto node = object(call, 0, "")) root.children.push_back(std::move(*node));
     }
+    if (!module_errors_.empty()) return {};  // reported by run
     if (objects == 0) {
       throw SceneError(end, file_has_tokens
                                 ? fmt::format("scene has no objects; add at least one of {}",
@@ -139,9 +164,32 @@ class Interpreter {
     return std::move(scene_);
   }
 
- private:
   // An index into contexts_.
   using ContextId = std::size_t;
+
+  void note(const SceneError& e) {
+    if (module_errors_.size() < kMaxListedSceneErrors) {
+      module_errors_.push_back(e);
+    } else {
+      ++unlisted_errors_;
+    }
+  }
+
+  // A module outside the subset: noted, and its children walked as a dropped
+  // subtree, so that every unsupported module under it is noted too.
+  [[gnu::noinline]] void unsupported_module(const Call& call, ContextId ctx) {
+    note(module_error(call));
+    children(call, push_dropped(ctx));
+    contexts_.pop_back();
+  }
+
+  // The context of a subtree that is read and checked, then left out.
+  ContextId push_dropped(ContextId ctx) {
+    Context inner = contexts_[ctx];
+    inner.dropped = true;
+    contexts_.push_back(inner);
+    return contexts_.size() - 1;
+  }
 
   void setting(const Call& call) {
     if (!call.modifiers.empty()) {
@@ -234,10 +282,7 @@ class Interpreter {
 
   // A '%' or '*' subtree: read and checked, then left out.
   [[gnu::noinline]] void dropped_subtree(const Call& call, ContextId ctx) {
-    Context inner = contexts_[ctx];
-    inner.dropped = true;
-    contexts_.push_back(inner);
-    build(call, contexts_.size() - 1);
+    build(call, push_dropped(ctx));
     contexts_.pop_back();
   }
 
@@ -247,7 +292,10 @@ class Interpreter {
       no_children(call);
       return primitive(call, ctx);
     }
-    if (!is_object(name)) refuse_module(call);
+    if (!is_object(name)) {
+      unsupported_module(call, ctx);
+      return std::nullopt;
+    }
     if (is_transform(name) || name == "color" || name == "material") {
       const ContextId inner = enter(call, ctx);
       CsgNode node = pass_through_children(call, inner);
@@ -390,6 +438,8 @@ class Interpreter {
   Loc root_loc_;
   std::optional<Loc> camera_loc_;
   std::optional<Loc> background_loc_;
+  std::vector<SceneError> module_errors_;  // at most kMaxListedSceneErrors
+  std::size_t unlisted_errors_ = 0;        // noted past that
 };
 
 }  // namespace

@@ -62,7 +62,21 @@ class Reader {
     const Token& t = peek(ahead);
     return t.kind == TokenKind::Symbol && t.text == s;
   }
+  // Every syntax error comes here. One at the end of the file, or at a name
+  // that is the file's last token (a complete file ends with ';' or '}'),
+  // means the file ends inside a statement: a truncated file, reported as
+  // such rather than as, say, an unknown variable cut short.
   [[noreturn]] void fail(const Token& t, const std::string& message) const {
+    const Token& end = tokens_.back();
+    if (t.kind == TokenKind::End) {
+      constexpr std::string_view kGotEnd = ", got end of file";
+      std::string_view expected = message;
+      if (expected.ends_with(kGotEnd)) expected.remove_suffix(kGotEnd.size());
+      throw SceneError(t.loc, fmt::format("unexpected end of file: {}", expected));
+    }
+    if (t.kind == TokenKind::Identifier && &t == &end - 1) {
+      throw SceneError(end.loc, fmt::format("unexpected end of file after '{}'", t.text));
+    }
     throw SceneError(t.loc, message);
   }
 
@@ -223,7 +237,7 @@ class Reader {
       fail(t, "ranges [start:step:end] are not supported; write the vector out");
     }
     if (t.kind == TokenKind::End) {
-      fail(t, fmt::format("missing '{}': expected ',' or '{}', got end of file", closer, closer));
+      fail(t, fmt::format("missing '{}': expected ',' or '{}'", closer, closer));
     }
     fail(t, fmt::format("expected ',' or '{}', got {}", closer, describe(t)));
   }
@@ -505,7 +519,7 @@ class Reader {
 
   // Why the token at pos_ does not start a value.
   [[noreturn, gnu::noinline]] void refuse_value() const {
-    if (peek().kind == TokenKind::End) fail(peek(), "expected a value, got end of file");
+    if (peek().kind == TokenKind::End) fail(peek(), "expected a value");
     fail(peek(), fmt::format("expected a value, got {}", describe(peek())));
   }
 

@@ -35,6 +35,10 @@ extern "C" void remove_temp_files_and_reraise(int signal_number) {
   const int saved_errno = errno;
   for (Slot& slot : slots)
     if (slot.state.load(std::memory_order_acquire) == kArmed) ::unlink(slot.path);
+  // Directories go once the files in them are gone; rmdir fails harmlessly on
+  // the paths the first pass removed.
+  for (Slot& slot : slots)
+    if (slot.state.load(std::memory_order_acquire) == kArmed) ::rmdir(slot.path);
   errno = saved_errno;
   // SA_RESETHAND restored the default action on entry; the signal, blocked
   // while this handler runs, is delivered again when it returns.

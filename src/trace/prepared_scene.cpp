@@ -91,7 +91,9 @@ PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   for (const Primitive& p : scene.primitives) ps.prims.push_back(prepare_primitive(p));
   ps.tree_template = StatusTree(scene.root, scene.primitives.size());
   if (ps.tree_template.empty())
-    throw SceneError(start, "the scene has no objects to draw (every branch is empty)");
+    throw SceneError(start, "the scene has no objects to draw: every object in it is dropped by '%' or '*', or is "
+                            "an empty group or operation (OpenSCAD renders such a scene empty, with a warning; "
+                            "capsim refuses it rather than write an image of the background alone)");
   ps.placed.resize(ps.prims.size());
   for (std::size_t i = 0; i < ps.prims.size(); ++i)
     ps.placed[i] = ps.tree_template.present(static_cast<std::uint32_t>(i));

@@ -20,6 +20,12 @@ namespace {
 
 const std::string kAnim = std::string(CAPSIM_SOURCE_DIR) + "/tests/data/anim";
 
+// model.scad as a file capsim reads itself, evaluating $t at each frame.
+std::string own_copy(const TempDir& dir) {
+  std::filesystem::copy_file(kAnim + "/model.scad", dir / "model.csg");
+  return dir / "model.csg";
+}
+
 std::vector<unsigned char> read_rgb8(const std::string& path, int& width, int& height) {
   auto in = OIIO::ImageInput::open(path);
   if (!in) return {};
@@ -48,7 +54,8 @@ int differing_pixels(const std::string& a, const std::string& b) {
 // cone with $t (lookup, sin, cos, `? :`); f00000.csg ... f00003.csg are what
 // `openscad --animate 4 -o f.csg model.scad` (OpenSCAD 2021.01) exported from
 // it, every value evaluated and printed to 6 significant digits. capsim reads
-// model.scad itself with --frames 4. Rounding to 6 digits moves an edge by up
+// the text of model.scad itself with --frames 4, as a copy named model.csg (a
+// .scad file would go through OpenSCAD: cli_scad_test.cpp). Rounding to 6 digits moves an edge by up
 // to 5e-6 of its size, which at 200x150 changed 0, 2, 0 and 0 pixels of the
 // four frames, by 1/255 in one channel (`idiff -fail 0` of the two renders);
 // the tolerance, 4 pixels of the 30,000 in any frame, is twice the most
@@ -57,7 +64,7 @@ int differing_pixels(const std::string& a, const std::string& b) {
 TEST(CliFrames, FramesMatchOpenScadsAnimateExports) {
   TempDir dir;
   const std::string size = " --size 200x150";
-  RunResult r = run_capsim("render --frames 4 " + kAnim + "/model.scad -o " + (dir / "t.png") + size, dir);
+  RunResult r = run_capsim("render --frames 4 " + own_copy(dir) + " -o " + (dir / "t.png") + size, dir);
   ASSERT_EQ(r.status, 0) << r.err;
   std::string exports;
   for (int k = 0; k < 4; ++k) exports += fmt::format(" {}/f{:05d}.csg", kAnim, k);
@@ -102,7 +109,7 @@ TEST(CliFrames, SimulateRunsTheFramesRenderDoes) {
 // threads: every frame's scene is parsed from the same text at its own $t.
 TEST(CliFrames, ReportsAndTracesDoNotDependOnHostThreads) {
   TempDir dir;
-  const std::string run = "simulate " + kAnim + "/model.scad --frames 3 --size 32x24 --cells 2x2 --aa 1";
+  const std::string run = "simulate " + own_copy(dir) + " --frames 3 --size 32x24 --cells 2x2 --aa 1";
   std::string report[2], trace[2];
   for (int threads = 1; threads <= 2; ++threads) {
     const std::string tag = std::to_string(threads);
@@ -122,7 +129,7 @@ TEST(CliFrames, ReportsAndTracesDoNotDependOnHostThreads) {
 TEST(CliFrames, OneFrameIsNumbered) {
   TempDir dir;
   const RunResult r =
-      run_capsim("render --frames 1 " + kAnim + "/model.scad -o " + (dir / "one.png") + " --size 20x15", dir);
+      run_capsim("render --frames 1 " + own_copy(dir) + " -o " + (dir / "one.png") + " --size 20x15", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir / "one00000.png"));
   EXPECT_FALSE(std::filesystem::exists(dir / "one.png"));

@@ -162,6 +162,20 @@ TEST(CliRender, SceneErrorsPointIntoTheFileAndWriteNothing) {
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// A scene whose every object is dropped is refused, saying why, as
+// docs/scene-format.md states; nothing is written.
+TEST(CliRender, AllObjectsDroppedIsRefused) {
+  TempDir dir;
+  std::ofstream(dir / "dropped.csg") << "camera(eye = [5, 5, 5]);\n*sphere(1);\n%cube(2);\n";
+  const RunResult r = run_capsim("render " + (dir / "dropped.csg") + " -o " + (dir / "out.png"), dir);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err.rfind(dir / "dropped.csg:", 0), 0u) << r.err;
+  EXPECT_NE(r.err.find("the scene has no objects to draw: every object in it is dropped by '%' or '*'"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.png"));
+}
+
 TEST(CliRender, HelpDescribesEveryOption) {
   TempDir dir;
   const RunResult r = run_capsim("render --help", dir);

@@ -62,6 +62,39 @@ TEST(UnitMemory, AUnitOverTheCellMemoryIsRefusedWithItsNumbers) {
   EXPECT_EQ(refusal(units[1], config.profile), "");  // 65,536 + 600,000 bytes fit
 }
 
+// When the program and the scene alone are over the cell memory, no grid
+// helps: the advice says so, with what the scene alone needs.
+TEST(UnitMemory, AScenePastTheCellMemoryWithoutAnyGridIsNotToldToCoarsenTheGrid) {
+  MachineConfig config;
+  config.profile = load_cost_profile("cap");  // 1048576 bytes, program 65536
+  SceneFootprint big;
+  big.primitives = 1'000'000;
+  big.voxel_grid = 100;
+  const std::vector<UnitMemory> one = unit_memories({big}, config, 8, 8);
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(refusal(one[0], config.profile),
+            "distribution unit 0 (frame 0) does not fit a cell's memory: it needs 1065636 bytes (program 65536 + "
+            "scene 1000000 + voxel data 100) but a cell of profile 'cap' has 1048576 bytes; the program and the "
+            "scene alone need 1065536 bytes, without any voxel grid, so a coarser --grid cannot help; use a "
+            "profile with more cell memory (--profile) or a scene of fewer primitives");
+  // 900,000 bytes of scene leave room for a coarser grid's voxel data.
+  big.primitives = 900'000;
+  big.voxel_grid = 100'000;
+  const std::string what = refusal(unit_memories({big}, config, 8, 8)[0], config.profile);
+  EXPECT_NE(what.find("; try a coarser --grid"), std::string::npos) << what;
+  // Frames averaged together: their scenes are summed, and fewer of them help.
+  SceneFootprint half;
+  half.primitives = 600'000;
+  config = averaged({2, 2});
+  config.frame_average_group = 2;
+  const std::string two = refusal(unit_memories({half, half}, config, 8, 8)[0], config.profile);
+  EXPECT_NE(two.find("the program and the scenes of its frames alone need 1265536 bytes, without any voxel grid, "
+                     "so a coarser --grid cannot help; put fewer frames in a unit, use a profile with more cell "
+                     "memory (--profile)"),
+            std::string::npos)
+      << two;
+}
+
 TEST(UnitMemory, AUnitOverTheVideoMemoryIsRefusedWithItsNumbers) {
   MachineConfig config = averaged({2, 2});
   config.frame_average_group = 4;

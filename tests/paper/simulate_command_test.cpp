@@ -68,6 +68,16 @@ TEST(SimulateCommand, EachFormListsEveryChangedSettingInItsOwnOrder) {
             "line --profile m380 --frames 5 --aa 2 --aa-threshold 0.25 --frame-average --threads 3");
 }
 
+// OpenSCAD's -D assignments come last, in order, each one shell word as
+// written ($ and quotes kept from the shell).
+TEST(SimulateCommand, DefinesAreSingleQuotedInOrder) {
+  SimulateSettings s = one_scene();
+  s.scenes = {"m.scad"};
+  s.defines = {"$fn=64", "label=\"it's\""};
+  EXPECT_EQ(simulate_command(s, CommandForm::NonDefaults),
+            "capsim simulate m.scad -o s.png -D '$fn=64' -D 'label=\"it'\\''s\"'");
+}
+
 TEST(SimulateCommand, TheReproductionsCommandsAreItsNonDefaultsForm) {
   RunSpec spec;
   spec.scene = "scenes/chess.csg";

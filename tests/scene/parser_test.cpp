@@ -913,7 +913,7 @@ TEST(ParserRefusesSyntax, MissingBrace) {
 
 TEST(ParserRefusesSyntax, MissingSemicolon) {
   EXPECT_TRUE(Refused("cube();\nsphere(1)", 2, 10,
-                      "expected ';', '{' or a child object after sphere(...), got end of file"));
+                      "unexpected end of file: expected ';', '{' or a child object after sphere(...)"));
   EXPECT_TRUE(Refused("sphere(1)\ncube(1);", 2, 1,
                       "sphere() takes no children (missing ';' after sphere(...)?)"));
   EXPECT_TRUE(Refused("union() { sphere(1) }", 1, 21,
