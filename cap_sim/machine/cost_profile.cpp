@@ -1,6 +1,7 @@
 #include "machine/cost_profile.h"
 
 #include "machine/builtin_profiles.h"
+#include "capsim/sha256.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -170,6 +171,7 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   p.name = top.text("name");
   p.description = top.text("description");
   p.source = source;
+  p.text_sha256 = sha256_hex(json_text);
   p.clock_hz = top.count("clock_hz");
   const std::uint64_t hz = p.clock_hz;
 

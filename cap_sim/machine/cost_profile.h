@@ -57,6 +57,9 @@ struct CostProfile {
   std::string name;
   std::string description;
   std::string source;  // where it was read from: a built-in name or a path
+  // SHA-256 of the JSON text it was parsed from (empty for a profile built in
+  // code): the reports' provenance names the exact profile a run used.
+  std::string text_sha256;
   std::uint64_t clock_hz = 0;
   CostTable costs;  // every term of kCostTerms, cell's and host's
   BusCosts bus;

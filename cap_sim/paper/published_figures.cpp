@@ -209,8 +209,10 @@ std::vector<TableError> table_errors(const std::vector<ComparedFigure>& all) {
 
 double overall_rms_log(const std::vector<ComparedFigure>& all) { return rms_log_of(counted(all, "")); }
 
-std::string reproduction_json(const ReproResult& r, const std::vector<ComparedFigure>& all) {
+std::string reproduction_json(const ReproResult& r, const std::vector<ComparedFigure>& all,
+                              const std::string& capsim_version) {
   nlohmann::ordered_json j;
+  j["capsim_version"] = capsim_version;
   nlohmann::ordered_json& a = j["assumptions"];
   a["screen"] = {{"cap", fmt::format("{}x{}", r.options.width, r.options.height)},
                  {"m380", fmt::format("{}x{}", r.options.m380_width, r.options.m380_height)}};

@@ -50,8 +50,10 @@ std::vector<TableError> table_errors(const std::vector<ComparedFigure>& all);
 // Over every fitted time not excluded.
 double overall_rms_log(const std::vector<ComparedFigure>& all);
 
-// The JSON of `capsim repro --json`: {"figures": [...], "assumptions": {...},
-// "tables": [...]} (docs/reproduction.md describes it).
-std::string reproduction_json(const ReproResult& r, const std::vector<ComparedFigure>& all);
+// The JSON of `capsim repro --json`: {"capsim_version": ..., "assumptions":
+// {...}, "tables": [...], "rms_ln_ratio": ..., "figures": [...]}
+// (docs/reproduction.md describes it).
+std::string reproduction_json(const ReproResult& r, const std::vector<ComparedFigure>& all,
+                              const std::string& capsim_version);
 
 }  // namespace capsim::sim

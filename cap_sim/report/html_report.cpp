@@ -10,6 +10,7 @@
 #include "capsim/image_io.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -47,6 +48,10 @@ std::pair<std::uint64_t, std::uint64_t> completion_range(const FrameScreen& s) {
   return {*lo, *hi};
 }
 
+const Provenance* provenance_of(const RunFacts& facts) {
+  return facts.provenance ? &*facts.provenance : nullptr;
+}
+
 std::string header_section(const SimulationResult& r, const RunFacts& facts) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   const bool sequence = r.screens.size() > 1;
@@ -58,11 +63,27 @@ std::string header_section(const SimulationResult& r, const RunFacts& facts) {
   return fmt::format(
       "<header>\n<h1>CAP simulation of <span class=\"scene\">{}</span></h1>\n"
       "<p class=\"lead\">{} cells in {} mode, profile {}, {}x{} pixels{}: {} <strong id=\"lead-time\">{:.3f} s"
-      "</strong> of simulated time.</p>\n<nav>{}</nav>\n</header>\n",
-      html_escape(std::filesystem::path(facts.scene).filename().string()), to_string(r.config.cells),
-      to_string(r.config.mode), html_escape(r.config.profile.name), r.width, r.height,
-      sequence ? fmt::format(", {} frames", r.screens.size()) : "", sequence ? "the run took" : "the frame took",
-      r.frame.seconds(hz), nav);
+      "</strong> of simulated time{}.</p>\n<nav>{}</nav>\n</header>\n",
+      html_escape(run_name(facts.scenes, r.screens.size())), to_string(r.config.cells), to_string(r.config.mode),
+      html_escape(r.config.profile.name), r.width, r.height,
+      sequence ? fmt::format(", {} frames", r.screens.size()) : "", sequence ? "all the frames took" : "the frame took",
+      r.frame.seconds(hz),
+      sequence ? fmt::format(", {:.3f} s per frame (mean)", sequence_time(r).frame_seconds) : std::string(), nav);
+}
+
+// The provenance's block as rows of the run's table: the command as typed,
+// each input's SHA-256 and the options' effective values.
+std::string provenance_rows(const Provenance& p) {
+  auto row = [](const std::string& name, const std::string& value) {
+    return fmt::format("<tr class=\"provenance\"><th>{}</th><td>{}</td></tr>\n", name, value);
+  };
+  std::string rows = row("Command as typed", "<code>" + html_escape(shell_line(p.argv)) + "</code>");
+  for (const InputFile& f : p.scenes)
+    rows += row("SHA-256 of " + html_escape(f.path), "<code>" + f.sha256 + "</code>");
+  rows += row("SHA-256 of profile " + html_escape(p.profile),
+              fmt::format("<code>{}</code> (name {})", p.profile_sha256, html_escape(p.profile_name)));
+  rows += row("Options", html_escape(options_line(p.options)));
+  return rows;
 }
 
 std::string run_section(const SimulationResult& r, const RunFacts& facts) {
@@ -71,7 +92,8 @@ std::string run_section(const SimulationResult& r, const RunFacts& facts) {
     return fmt::format("<tr><th>{}</th><td{}>{}</td></tr>\n", name, id ? fmt::format(" id=\"{}\"", id) : "", value);
   };
   std::string rows;
-  rows += row("Scene", html_escape(facts.scene));
+  rows += row(facts.scenes.size() > 1 ? "Scenes" : "Scene",
+              html_escape(fmt::format("{}", fmt::join(facts.scenes, " "))));
   rows += row("Command", "<code>" + html_escape(facts.command) + "</code>");
   rows += row("Profile", fmt::format("{}, clock {} Hz", html_escape(r.config.profile.name), grouped(hz)));
   rows += row("Cells", fmt::format("{} ({} cells)", to_string(r.config.cells), r.config.cells.cell_count()));
@@ -86,8 +108,12 @@ std::string run_section(const SimulationResult& r, const RunFacts& facts) {
                                   ? fmt::format("depth {}, threshold {}, {} links", r.config.aa.depth,
                                                 r.config.aa.threshold, to_string(r.config.profile.link.topology))
                                   : std::string("none (one sample at each pixel centre)"));
-  rows += row(r.screens.size() > 1 ? "Run time" : "Frame time",
-              fmt::format("{:.3f} s ({} cycles)", r.frame.seconds(hz), grouped(r.frame.count())), "frame-time");
+  if (r.screens.size() > 1)
+    rows += row("Time", fmt::format("{} ({} cycles in all)", sequence_time_text(r), grouped(r.frame.count())),
+                "frame-time");
+  else
+    rows += row("Frame time", fmt::format("{:.3f} s ({} cycles)", r.frame.seconds(hz), grouped(r.frame.count())),
+                "frame-time");
   rows += row("Data broadcast",
               fmt::format("program {} B, scene {} B, voxel data {} B", grouped(r.config.profile.program_bytes),
                           grouped(r.footprint.scene_bytes()), grouped(r.footprint.voxel_bytes())));
@@ -96,6 +122,7 @@ std::string run_section(const SimulationResult& r, const RunFacts& facts) {
               facts.host_seconds >= 0 ? fmt::format("{:.3f} s", facts.host_seconds) : std::string("not measured"),
               "host-time");
   rows += row("capsim", html_escape(facts.version));
+  if (facts.provenance) rows += provenance_rows(*facts.provenance);
   return "<section id=\"run\">\n<h2>The run</h2>\n<table class=\"facts\">\n" + rows + "</table>\n</section>\n";
 }
 
@@ -343,6 +370,15 @@ std::string data_block(const char* id, std::string_view json) {
 
 }  // namespace
 
+std::string run_name(const std::vector<std::string>& scenes, std::size_t frames) {
+  const auto name = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+  if (scenes.empty()) return "";
+  if (frames <= 1) return name(scenes.front());
+  if (scenes.size() == 1) return fmt::format("{} ({} frames)", name(scenes.front()), frames);
+  return fmt::format("{} {} {} ({} frames)", name(scenes.front()), scenes.size() == 2 ? "and" : "...",
+                     name(scenes.back()), frames);
+}
+
 std::string html_report(const SimulationResult& r, const RunFacts& facts) {
   for (const FrameScreen& s : r.screens)
     if (s.completion_cycles.size() != static_cast<std::size_t>(r.width) * r.height)
@@ -355,12 +391,11 @@ std::string html_report(const SimulationResult& r, const RunFacts& facts) {
       "</main>\n<footer>Written by capsim {}. The --report JSON and the --trace JSON of this run are in this file, "
       "in the elements with ids report-data and trace-data.</footer>\n",
       html_escape(facts.version));
-  body += data_block("report-data", report_json_text(r));
+  body += data_block("report-data", report_json_text(r, provenance_of(facts)));
   body += data_block("trace-data", chrome_trace_text(r));
   body += data_block("page-data", page_data(r));
 
-  const std::string title = fmt::format("capsim: {}, {} cells, {} mode",
-                                        std::filesystem::path(facts.scene).filename().string(),
+  const std::string title = fmt::format("capsim: {}, {} cells, {} mode", run_name(facts.scenes, r.screens.size()),
                                         to_string(r.config.cells), to_string(r.config.mode));
   const HtmlAssets& assets = html_assets();
   const std::string escaped_title = html_escape(title);

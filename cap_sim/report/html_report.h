@@ -14,20 +14,30 @@
 // sortable table, the timeline and the charts.
 
 #include "machine/machine.h"
+#include "report/provenance.h"
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace capsim::sim {
 
 // What the page says about the run beyond the simulation's result.
 struct RunFacts {
-  std::string scene;    // the scene file as given
+  std::vector<std::string> scenes;  // the scene files as given
   std::string command;  // the command line that ran it
   // The host's wall time for the run, in seconds; negative: not measured. The
   // only part of the page that changes from one run to the next.
   double host_seconds = -1;
   std::string version;  // capsim's
+  // Given, the page shows it and its report data carries it, as --report does.
+  std::optional<Provenance> provenance;
 };
+
+// What the page's title and heading call the run: the scene file's name
+// ("balls.csg"); for --frames K, "model.scad (K frames)"; for a sequence of
+// files, the first and last "f00000.csg ... f00003.csg (4 frames)".
+std::string run_name(const std::vector<std::string>& scenes, std::size_t frames);
 
 // Precondition: r was run with MachineConfig::completion_cycles.
 std::string html_report(const SimulationResult& r, const RunFacts& facts);

@@ -49,6 +49,26 @@ std::string format_sequence(const SimulationResult& r) {
 
 }  // namespace
 
+SequenceTime sequence_time(const SimulationResult& r) {
+  SequenceTime t;
+  t.frames = r.screens.size();
+  t.groups = r.config.frame_average ? r.units.size() : 0;
+  t.total_seconds = r.frame.seconds(r.config.profile.clock_hz);
+  t.frame_seconds = t.frames > 0 ? t.total_seconds / static_cast<double>(t.frames) : 0;
+  t.group_seconds = t.groups > 0 ? t.total_seconds / static_cast<double>(t.groups) : 0;
+  return t;
+}
+
+std::string sequence_time_text(const SimulationResult& r) {
+  const SequenceTime t = sequence_time(r);
+  if (t.groups > 0)
+    return fmt::format("frames: {} in {} groups, time per group (mean) {:.3f} s, per frame (mean) {:.3f} s, total "
+                       "{:.3f} s",
+                       t.frames, t.groups, t.group_seconds, t.frame_seconds, t.total_seconds);
+  return fmt::format("frames: {}, time per frame (mean) {:.3f} s, total {:.3f} s", t.frames, t.frame_seconds,
+                     t.total_seconds);
+}
+
 namespace {
 
 // One row per cell: row, col, then the value of every cell statistic of the
@@ -92,7 +112,7 @@ std::string format_antialiasing(const SimulationResult& r) {
 
 }  // namespace
 
-std::string format_report(const SimulationResult& r) {
+std::string format_report(const SimulationResult& r, const Provenance* provenance) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   std::string out = fmt::format(
       "CAP simulation: {} cells, {} mode, profile {} ({} Hz), {}x{} pixels\n",
@@ -114,7 +134,10 @@ std::string format_report(const SimulationResult& r) {
   const LoadSpread busy = busy_spread(r);
   out += fmt::format("busy only (the cycles each cell computed): Max {:.3f} s   Min {:.3f} s   d = {:.2f} %\n",
                      busy.max_finish.seconds(hz), busy.min_finish.seconds(hz), busy.deviation_percent);
-  out += fmt::format("frame time {:.3f} s ({} cycles)\n\n", r.frame.seconds(hz), r.frame.count());
+  if (r.screens.size() > 1)
+    out += fmt::format("{} ({} cycles)\n\n", sequence_time_text(r), r.frame.count());
+  else
+    out += fmt::format("frame time {:.3f} s ({} cycles)\n\n", r.frame.seconds(hz), r.frame.count());
 
   out += "time by process (all cells' work and the host's voxel generation):\n";
   const double total = r.breakdown.total().seconds(hz);
@@ -126,6 +149,7 @@ std::string format_report(const SimulationResult& r) {
   out += fmt::format("  {:<22} {:>14.3f} s\n", "total", total);
   if (r.config.aa.depth > 0) out += format_antialiasing(r);
   if (r.screens.size() > 1) out += format_sequence(r);
+  if (provenance) out += provenance_text(*provenance);
   return out;
 }
 
@@ -193,17 +217,23 @@ void add_sequence(nlohmann::json& report, const SimulationResult& r) {
   }
   report["frames"] = frames;
   report["units"] = units;
+  const SequenceTime time = sequence_time(r);
   report["sequence"] = {{"frames", r.screens.size()},
                         {"frame_average", r.config.frame_average},
                         {"processing", processing_name(r)},
                         {"total_seconds", r.frame.seconds(hz)},
+                        {"mean_frame_seconds", time.frame_seconds},
                         {"total_cycles", r.frame.count()},
                         {"max_deviation_percent", max_deviation_percent(r)}};
+  if (time.groups > 0) {
+    report["sequence"]["groups"] = time.groups;
+    report["sequence"]["mean_group_seconds"] = time.group_seconds;
+  }
 }
 
 }  // namespace
 
-nlohmann::json report_json(const SimulationResult& r) {
+nlohmann::json report_json(const SimulationResult& r, const Provenance* provenance) {
   using nlohmann::json;
   const std::uint64_t hz = r.config.profile.clock_hz;
   json cells = json::array();
@@ -250,10 +280,13 @@ nlohmann::json report_json(const SimulationResult& r) {
           {"total_cycles", r.frame.count()}};
   if (r.config.aa.depth > 0) add_antialiasing(report, r);
   if (r.screens.size() > 1) add_sequence(report, r);
+  if (provenance) report["provenance"] = provenance_json(*provenance);
   return report;
 }
 
-std::string report_json_text(const SimulationResult& r) { return report_json(r).dump(2) + "\n"; }
+std::string report_json_text(const SimulationResult& r, const Provenance* provenance) {
+  return report_json(r, provenance).dump(2) + "\n";
+}
 
 std::string chrome_trace_text(const SimulationResult& r) {
   const std::string name = fmt::format("CAP {} cells, {} mode, profile {}", to_string(r.config.cells),

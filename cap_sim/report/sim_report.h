@@ -6,6 +6,7 @@
 
 #include "machine/machine.h"
 #include "machine/run_figures.h"
+#include "report/provenance.h"
 
 #include <nlohmann/json.hpp>
 
@@ -13,10 +14,28 @@
 
 namespace capsim::sim {
 
-std::string format_report(const SimulationResult& r);
-nlohmann::json report_json(const SimulationResult& r);
+// With a provenance, the text ends with its block (provenance_text) and the
+// JSON carries it as "provenance".
+std::string format_report(const SimulationResult& r, const Provenance* provenance = nullptr);
+nlohmann::json report_json(const SimulationResult& r, const Provenance* provenance = nullptr);
 // The text --report writes: report_json indented by 2, and a newline.
-std::string report_json_text(const SimulationResult& r);
+std::string report_json_text(const SimulationResult& r, const Provenance* provenance = nullptr);
+
+// A sequence's simulated time: the whole run's, and its mean per frame and,
+// frame averaged, per group of frames (the cells run through a group without
+// waiting for each other).
+struct SequenceTime {
+  std::size_t frames = 0;
+  std::size_t groups = 0;  // frame averaged; 0 otherwise
+  double total_seconds = 0;
+  double frame_seconds = 0;  // total / frames
+  double group_seconds = 0;  // total / groups; 0 without groups
+};
+SequenceTime sequence_time(const SimulationResult& r);
+// "frames: 4, time per frame (mean) 13.706 s, total 54.825 s", or frame
+// averaged "frames: 16 in 2 groups, time per group (mean) ..., per frame
+// (mean) ..., total ...": how the reports label a sequence's time.
+std::string sequence_time_text(const SimulationResult& r);
 
 // The text --trace writes: the timeline as Chrome trace-event JSON, its process
 // named after the grid, mode and profile.

@@ -102,10 +102,14 @@ int run_modes(const BenchOptions& o) {
       outcome.not_comparable = e.what();
     }
   }
-  if (!o.json.empty()) sim::write_text_file(outputs["--json"], now.dump(2) + "\n");
+  // The files (and the baseline --update writes) name the version that wrote
+  // them; the comparison reads only the runs, the size and the profile.
+  nlohmann::json written = now;
+  written["capsim_version"] = CAPSIM_VERSION;
+  if (!o.json.empty()) sim::write_text_file(outputs["--json"], written.dump(2) + "\n");
   if (!o.plot.text.empty()) sim::write_text_file(outputs["--plot"], sim::modes_bench_svg(bench));
   if (!o.html.empty()) sim::write_text_file(outputs["--html"], sim::modes_page(bench, outcome, CAPSIM_VERSION));
-  if (o.update) sim::write_text_file(outputs["--baseline"], now.dump(2) + "\n");
+  if (o.update) sim::write_text_file(outputs["--baseline"], written.dump(2) + "\n");
   outputs.commit();
 
   const std::vector<sim::MovedFigure>& moved = outcome.moved;

@@ -6,13 +6,16 @@
 #include <CLI/CLI.hpp>
 
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace capsim::cli {
 
 using Command = std::function<int()>;
 
 Command add_render_command(CLI::App& app);
-Command add_simulate_command(CLI::App& app);
+// argv: the command line as typed, which the run's provenance records.
+Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv);
 Command add_lattice_command(CLI::App& app);
 Command add_repro_command(CLI::App& app);
 Command add_calibrate_command(CLI::App& app);

@@ -122,9 +122,11 @@ Command add_repro_command(CLI::App& app) {
     sim::write_text_file(outputs["--images (table-4-2.svg)"], sim::table_4_2_plot_svg(result));
     sim::write_text_file(outputs["--images (graph-4-3.svg)"], sim::graph_4_3_plot_svg(result));
     sim::write_text_file(outputs["--output"], sim::reproduction_markdown(result, link.empty() ? "." : link));
-    if (!o->json.empty())
-      sim::write_text_file(outputs["--json"],
-                           sim::reproduction_json(result, sim::compared_figures(result, sim::Exclusions::Table44ChessCad)));
+    if (!o->json.empty()) {
+      const std::vector<sim::ComparedFigure> figures =
+          sim::compared_figures(result, sim::Exclusions::Table44ChessCad);
+      sim::write_text_file(outputs["--json"], sim::reproduction_json(result, figures, CAPSIM_VERSION));
+    }
     outputs.commit();
     if (made) made->keep();
     fmt::print("{}: written ({:.1f} s)\n", o->output, log.seconds());

@@ -15,9 +15,9 @@
 #include "report/text_output.h"
 
 #include "capsim/image_io.h"
+#include "capsim/sha256.h"
 
 #include <fmt/core.h>
-#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <chrono>
@@ -60,6 +60,44 @@ sim::SimulateSettings run_settings(const TracerSettings& t, const sim::MachineCo
   s.threads = t.threads;
   s.defines = t.defines;
   return s;
+}
+
+// Where the run came from (report/provenance.h): every option with the value
+// the run used, each named as on the command line.
+sim::Provenance run_provenance(const std::vector<std::string>& argv, const TracerSettings& t,
+                               const SimulateOptions& o, const sim::MachineConfig& config,
+                               const sim::SimulationResult& result, const std::vector<PreparedScene>& scenes) {
+  using nlohmann::json;
+  const auto path_or_null = [](const std::string& path) { return path.empty() ? json() : json(path); };
+  sim::Provenance p;
+  p.argv = argv;
+  p.version = CAPSIM_VERSION;
+  for (const std::string& scene : t.scenes) p.scenes.push_back({scene, file_sha256_hex(scene)});
+  p.profile = o.profile.text;
+  p.profile_name = config.profile.name;
+  p.profile_sha256 = config.profile.text_sha256;
+  json divisions = json::array();
+  for (const PreparedScene& s : scenes) divisions.push_back(s.grid.n);
+  p.options = {{"scenes", t.scenes},
+               {"frames", t.animate ? json(t.frames) : json()},
+               {"output", t.output},
+               {"size", fmt::format("{}x{}", result.width, result.height)},
+               {"grid", t.prepare.grid > 0 ? json(t.prepare.grid) : json("auto")},
+               {"grid_divisions", divisions},
+               {"threads", t.threads},
+               {"max_memory", t.max_memory > 0 ? json(t.max_memory) : json()},
+               {"primary_only", t.trace.primary_only},
+               {"aa", t.aa.depth},
+               {"aa_threshold", t.aa.threshold},
+               {"cells", sim::to_string(config.cells)},
+               {"mode", sim::to_string(config.mode)},
+               {"profile", o.profile.text},
+               {"report", path_or_null(o.report)},
+               {"trace", path_or_null(o.trace)},
+               {"heatmap", path_or_null(o.heatmap.text)},
+               {"html", path_or_null(o.html)},
+               {"frame_average", config.frame_average}};
+  return p;
 }
 
 bool is_builtin_profile(const std::string& value) {
@@ -105,7 +143,7 @@ sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
 
 }  // namespace
 
-Command add_simulate_command(CLI::App& app) {
+Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv) {
   auto opts = std::make_shared<TracerOptions>();
   auto sim = std::make_shared<SimulateOptions>();
   CLI::App* cmd = app.add_subcommand(
@@ -147,7 +185,7 @@ Command add_simulate_command(CLI::App& app) {
                         "run through groups of RxC frames without waiting for each other (docs/animation.md)"),
           flag_values());
 
-  return [opts, sim] {
+  return [opts, sim, argv] {
     const TracerSettings settings = check_tracer_options(*opts);
     sim::MachineConfig config = check_simulate_options(*sim);
     config.aa = settings.aa;
@@ -197,21 +235,24 @@ Command add_simulate_command(CLI::App& app) {
         write_image(out, screen.screen, extra);
       }
     }
-    if (!sim->report.empty()) sim::write_text_file(outputs["--report"], sim::report_json_text(result));
+    const sim::Provenance provenance = run_provenance(argv, settings, *sim, config, result, scenes);
+    if (!sim->report.empty())
+      sim::write_text_file(outputs["--report"], sim::report_json_text(result, &provenance));
     if (!sim->trace.empty()) sim::write_text_file(outputs["--trace"], sim::chrome_trace_text(result));
     if (!sim->heatmap.text.empty())
       write_image(outputs["--heatmap"], sim::to_framebuffer(sim::render_heatmap(result)));
     if (!sim->html.empty()) {
-      const sim::RunFacts facts{fmt::format("{}", fmt::join(settings.scenes, " ")),
+      const sim::RunFacts facts{settings.scenes,
                                 sim::simulate_command(run_settings(settings, config, sim->profile.text, result.width,
                                                                    result.height),
                                                       sim::CommandForm::EveryOption),
                                 wall.count(),
-                                CAPSIM_VERSION};
+                                CAPSIM_VERSION,
+                                provenance};
       sim::write_text_file(outputs["--html"], sim::html_report(result, facts));
     }
     outputs.commit();
-    fmt::print("{}", sim::format_report(result));
+    fmt::print("{}", sim::format_report(result, &provenance));
     return 0;
   };
 }

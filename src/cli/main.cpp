@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(0, 1);  // none is a usage error, reported below in capsim's words
   app.set_version_flag("--version", "capsim " CAPSIM_VERSION);  // the project version in CMakeLists.txt
   const capsim::cli::Command render = capsim::cli::add_render_command(app);
-  const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app);
+  const capsim::cli::Command simulate = capsim::cli::add_simulate_command(app, {argv, argv + argc});
   const capsim::cli::Command lattice = capsim::cli::add_lattice_command(app);
   const capsim::cli::Command repro = capsim::cli::add_repro_command(app);
   const capsim::cli::Command bench = capsim::cli::add_bench_command(app);

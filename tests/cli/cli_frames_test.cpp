@@ -106,7 +106,9 @@ TEST(CliFrames, SimulateRunsTheFramesRenderDoes) {
 }
 
 // The reports and traces of an animation are the same bytes on 1 and 2 host
-// threads: every frame's scene is parsed from the same text at its own $t.
+// threads, but for the provenance's record of the command line (its outputs'
+// names and --threads): every frame's scene is parsed from the same text at
+// its own $t.
 TEST(CliFrames, ReportsAndTracesDoNotDependOnHostThreads) {
   TempDir dir;
   const std::string run = "simulate " + own_copy(dir) + " --frames 3 --size 32x24 --cells 2x2 --aa 1";
@@ -117,12 +119,30 @@ TEST(CliFrames, ReportsAndTracesDoNotDependOnHostThreads) {
                                        (dir / ("r" + tag + ".json")) + " --trace " + (dir / ("t" + tag + ".json")),
                                    dir);
     ASSERT_EQ(r.status, 0) << r.err;
-    report[threads - 1] = read_file(dir / ("r" + tag + ".json"));
+    nlohmann::json j = nlohmann::json::parse(read_file(dir / ("r" + tag + ".json")));
+    EXPECT_EQ(j["provenance"]["options"]["threads"], threads);
+    EXPECT_EQ(j["provenance"]["options"]["frames"], 3);
+    j["provenance"].erase("argv");
+    j["provenance"]["options"] = nullptr;
+    report[threads - 1] = j.dump(2);
     trace[threads - 1] = read_file(dir / ("t" + tag + ".json"));
   }
   EXPECT_FALSE(report[0].empty());
   EXPECT_EQ(report[0], report[1]);
   EXPECT_EQ(trace[0], trace[1]);
+}
+
+// The page of an animation names the one file and the frame count; the text
+// report labels the time per frame and in all.
+TEST(CliFrames, PageOfAnAnimationNamesTheFileAndItsFrames) {
+  TempDir dir;
+  const RunResult r = run_capsim("simulate " + kAnim + "/model.scad --frames 3 --size 16x12 --cells 1x2 -o " +
+                                     (dir / "s.png") + " --html " + (dir / "s.html"),
+                                 dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string page = read_file(dir / "s.html");
+  EXPECT_NE(page.find("<title>capsim: model.scad (3 frames), 1x2 cells, dot mode</title>"), std::string::npos);
+  EXPECT_NE(r.out.find("frames: 3, time per frame (mean) "), std::string::npos) << r.out;
 }
 
 // As with `openscad --animate 1`, one frame is still numbered.

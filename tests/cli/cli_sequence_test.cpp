@@ -3,6 +3,7 @@
 // nothing is written when any frame fails; one camera frames the sequence.
 
 #include "support/cli_run.h"
+#include "support/html_page.h"
 
 #include "capsim/parser.h"
 #include "capsim/prepared_scene.h"
@@ -78,6 +79,44 @@ TEST(CliSequence, AFrameThatFailsLeavesNoFrameWritten) {
     EXPECT_EQ(r.status, 1) << cmd;
     EXPECT_NE(r.err.find("bad.csg:1:"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(dir / "out00000.png")) << cmd;
+  }
+}
+
+// A sequence's time is labelled as the whole run's, with its mean per frame
+// (and, frame averaged, per group), in the text report, the JSON and the page,
+// whose title names the sequence rather than its last file.
+TEST(CliSequence, TimesAreLabelledPerFrameAndInAllAndThePageNamesTheSequence) {
+  TempDir dir;
+  const std::string files = write_frames(dir, 4);
+  for (const std::string extra : {"", " --frame-average"}) {
+    const RunResult r = run_capsim("simulate" + files + " --size 24x18 --cells 1x2 -o " + (dir / "s.png") +
+                                       " --report " + (dir / "s.json") + " --html " + (dir / "s.html") + extra,
+                                   dir);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const nlohmann::json report = nlohmann::json::parse(read_file(dir / "s.json"));
+    const double total = report["total_cycles"].get<double>() / report["clock_hz"].get<double>();
+    EXPECT_DOUBLE_EQ(report["sequence"]["total_seconds"].get<double>(), total);
+    EXPECT_DOUBLE_EQ(report["sequence"]["mean_frame_seconds"].get<double>(), total / 4);
+    const std::string label =
+        extra.empty() ? fmt::format("frames: 4, time per frame (mean) {:.3f} s, total {:.3f} s", total / 4, total)
+                      : fmt::format("frames: 4 in 2 groups, time per group (mean) {:.3f} s, per frame (mean) {:.3f} "
+                                    "s, total {:.3f} s",
+                                    total / 2, total / 4, total);
+    if (extra.empty()) {
+      EXPECT_FALSE(report["sequence"].contains("groups"));
+    } else {
+      EXPECT_EQ(report["sequence"]["groups"], 2);
+      EXPECT_DOUBLE_EQ(report["sequence"]["mean_group_seconds"].get<double>(), total / 2);
+    }
+    EXPECT_NE(r.out.find(label + " (" + report["total_cycles"].dump() + " cycles)\n"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("frame time"), std::string::npos) << r.out;
+    const std::string page = read_file(dir / "s.html");
+    EXPECT_NE(page.find("<td id=\"frame-time\">" + label + " ("), std::string::npos) << extra;
+    EXPECT_NE(page.find(fmt::format("{:.3f} s per frame (mean)", total / 4)), std::string::npos) << extra;
+    EXPECT_NE(page.find("<title>capsim: f0.csg ... f3.csg (4 frames), 1x2 cells, dot mode</title>"),
+              std::string::npos)
+        << extra;
+    EXPECT_NE(page.find("<span class=\"scene\">f0.csg ... f3.csg (4 frames)</span>"), std::string::npos) << extra;
   }
 }
 

@@ -1,8 +1,10 @@
 // `capsim simulate` end to end: the screen is byte-identical to `capsim render`,
-// every output is byte-identical across runs and host thread counts, and bad
-// options fail with a message.
+// every output is byte-identical across runs and host thread counts (but for
+// --threads itself, which the reports' provenance records), and bad options
+// fail with a message.
 
 #include "support/cli_run.h"
+#include "support/provenance.h"
 
 #include <nlohmann/json.hpp>
 
@@ -32,8 +34,11 @@ TEST(CliSimulate, OutputsAreByteIdenticalAcrossRunsAndThreadCounts) {
                                        " --report " + (dir / "r.json") + " --trace " + (dir / "t.json") +
                                        " --heatmap " + (dir / "h.png") + " --threads " + threads, dir);
     ASSERT_EQ(r.status, 0) << r.err;
-    const std::string now[5] = {read_file(dir / "s.png"), read_file(dir / "r.json"), read_file(dir / "t.json"),
-                                read_file(dir / "h.png"), r.out};
+    const std::string now[5] = {read_file(dir / "s.png"), without_threads(read_file(dir / "r.json")),
+                                read_file(dir / "t.json"), read_file(dir / "h.png"), text_without_threads(r.out)};
+    EXPECT_EQ(nlohmann::json::parse(read_file(dir / "r.json"))["provenance"]["options"]["threads"],
+              std::stoi(threads));
+    EXPECT_NE(r.out.find("  options  "), std::string::npos) << r.out;
     if (first[0].empty()) {
       std::copy(std::begin(now), std::end(now), std::begin(first));
       continue;

@@ -58,7 +58,9 @@ MachineConfig config_of(CellGrid grid, PixelMode mode, int aa) {
   return c;
 }
 
-const RunFacts kFacts{"scenes/balls.csg", "capsim simulate scenes/balls.csg -o s.png", 0.25, "0.1.0"};
+const RunFacts kFacts{{"scenes/balls.csg"},
+                      "capsim simulate scenes/balls.csg -o s.png", 0.25, "0.1.0",
+                      std::nullopt};
 
 void write(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);

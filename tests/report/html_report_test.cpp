@@ -50,7 +50,9 @@ MachineConfig config_of(CellGrid grid, PixelMode mode, int aa = 0, ScreenFormat 
   return c;
 }
 
-const RunFacts kFacts{"scenes/balls.csg", "capsim simulate scenes/balls.csg -o s.png", 1.5, "0.1.0"};
+const RunFacts kFacts{{"scenes/balls.csg"},
+                      "capsim simulate scenes/balls.csg -o s.png", 1.5, "0.1.0",
+                      std::nullopt};
 
 
 // A frame-averaged, antialiased run of five frames on 2x2 cells: every part of
@@ -131,6 +133,34 @@ TEST(HtmlReport, EmbedsTheReportAndTheTraceJsonByteForByte) {
     EXPECT_EQ(unescape_block(data_block_text(page, "report-data")), report_json(r).dump(2) + "\n");
     EXPECT_EQ(unescape_block(data_block_text(page, "trace-data")), chrome_trace_text(r));
   }
+}
+
+// Given a provenance, the page's report data is the --report JSON with it, and
+// the run's table shows it, a path in it escaped as HTML.
+TEST(HtmlReport, CarriesAndShowsTheProvenance) {
+  const PreparedScene scene = balls(16, 12);
+  const Tracer tracer(scene, TraceOptions{});
+  const SimulationResult r = simulate_frame(tracer, config_of({2, 2}, PixelMode::Dot), 1, false);
+  Provenance p;
+  p.argv = {"capsim", "simulate", "a&b.csg"};
+  p.version = "0.1.0";
+  p.scenes = {{"a&b.csg", std::string(64, '0')}};
+  p.profile = p.profile_name = "cap";
+  p.profile_sha256 = r.config.profile.text_sha256;
+  p.options = {{"cells", "2x2"}};
+  RunFacts facts = kFacts;
+  facts.provenance = p;
+  const std::string page = html_report(r, facts);
+  const std::string report = unescape_block(data_block_text(page, "report-data"));
+  EXPECT_EQ(report, report_json_text(r, &p));
+  EXPECT_EQ(nlohmann::json::parse(report)["provenance"], provenance_json(p));
+  EXPECT_NE(page.find("<th>Command as typed</th><td><code>capsim simulate &#39;a&amp;b.csg&#39;</code></td>"),
+            std::string::npos);
+  EXPECT_NE(page.find("<th>SHA-256 of a&amp;b.csg</th><td><code>" + std::string(64, '0') + "</code></td>"),
+            std::string::npos);
+  EXPECT_NE(page.find("<th>Options</th><td>cells 2x2</td>"), std::string::npos);
+  EXPECT_FALSE(nlohmann::json::parse(unescape_block(data_block_text(html_report(r, kFacts), "report-data")))
+                   .contains("provenance"));
 }
 
 TEST(HtmlReport, DataBlocksCannotEndTheirElementEarly) {

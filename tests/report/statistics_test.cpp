@@ -15,6 +15,8 @@
 namespace capsim::sim {
 namespace {
 
+const RunFacts kFacts{{"balls.csg"}, "capsim simulate balls.csg", 0.5, "0", std::nullopt};
+
 SimulationResult run(int depth) {
   PrepareOptions prep;
   prep.width = 48;
@@ -35,7 +37,7 @@ TEST(Statistics, EveryCellStatisticIsInTheJsonTextAndPage) {
     const SimulationResult r = run(depth);
     const nlohmann::json json = report_json(r);
     const std::string text = format_report(r);
-    const std::string page = html_report(r, RunFacts{"balls.csg", "capsim simulate balls.csg", 0.5, "0"});
+    const std::string page = html_report(r, kFacts);
     for (const auto& s : kCellStatistics) {
       const bool kept = s.scope == StatisticScope::Always || depth > 0;
       for (std::size_t c = 0; c < r.cells.size(); ++c) {
@@ -54,7 +56,7 @@ TEST(Statistics, EveryLinkStatisticIsInTheJsonAndPage) {
   const SimulationResult r = run(1);
   ASSERT_FALSE(r.links.empty());
   const nlohmann::json json = report_json(r);
-  const std::string page = html_report(r, RunFacts{"balls.csg", "capsim simulate balls.csg", 0.5, "0"});
+  const std::string page = html_report(r, kFacts);
   for (const auto& s : kLinkStatistics) {
     for (std::size_t l = 0; l < r.links.size(); ++l) EXPECT_EQ(json["links"][l][s.json_key()], s.value(r.links[l]));
     EXPECT_NE(page.find(std::string("<th>") + s.title + "</th>"), std::string::npos) << s.name;
