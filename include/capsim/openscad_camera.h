@@ -36,6 +36,10 @@ Camera openscad_camera(const OpenScadCameraOptions& options, const Aabb& bounds,
 // "--camera=EYE_X,EYE_Y,EYE_Z,CENTER_X,CENTER_Y,CENTER_Z --projection=P".
 std::string camera_arguments(const Camera& camera);
 
+// The perspective camera as a scene file's camera statement that gives its
+// view exactly: "camera(eye = [...], center = [...], up = [...], fov = F);".
+std::string camera_statement(const Camera& camera);
+
 // Whether camera_arguments gives this camera exactly: OpenSCAD's field of view
 // and its up vector (z turned into the view plane).
 bool expressible_as_openscad(const Camera& camera);

@@ -237,8 +237,8 @@ void print_cameras(const TracerSettings& s, const std::vector<PreparedScene>& fr
     if (!expressible_as_openscad(c))
       fmt::print(stderr,
                  "camera{}: a {:g} degree field with up [{:g}, {:g}, {:g}]; OpenSCAD's --camera sees from the same "
-                 "eye and centre with a {:g} degree field and z up\n",
-                 frame, c.fov_deg, c.up.x, c.up.y, c.up.z, kOpenScadFov);
+                 "eye and centre with a {:g} degree field and z up; this view exactly, in the scene file: {}\n",
+                 frame, c.fov_deg, c.up.x, c.up.y, c.up.z, kOpenScadFov, camera_statement(c));
   }
 }
 

@@ -99,9 +99,16 @@ bool expressible_as_openscad(const Camera& c) {
   return std::abs(right.z) <= 1e-9 * glm::length(right) && glm::dot(glm::cross(right, forward), z) > 0;
 }
 
+// "{}" prints a double's shortest form that reads back as the same double, so
+// that a pasted camera gives the very same rays.
 std::string camera_arguments(const Camera& c) {
-  return fmt::format("--camera={:.9g},{:.9g},{:.9g},{:.9g},{:.9g},{:.9g} --projection={}", c.eye.x, c.eye.y,
+  return fmt::format("--camera={},{},{},{},{},{} --projection={}", c.eye.x, c.eye.y,
                      c.eye.z, c.center.x, c.center.y, c.center.z, to_string(c.projection));
+}
+
+std::string camera_statement(const Camera& c) {
+  return fmt::format("camera(eye = [{}, {}, {}], center = [{}, {}, {}], up = [{}, {}, {}], fov = {});", c.eye.x,
+                     c.eye.y, c.eye.z, c.center.x, c.center.y, c.center.z, c.up.x, c.up.y, c.up.z, c.fov_deg);
 }
 
 }  // namespace capsim

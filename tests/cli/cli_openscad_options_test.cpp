@@ -94,6 +94,16 @@ TEST(CliOpenScadOptions, VerboseCameraPastesBack) {
                        "and centre with a 22.5 degree field and z up"),
             std::string::npos)
       << r.err;
+  // ... and gives the statement that sees exactly as it does.
+  const std::string marker = "in the scene file: ";
+  const auto at = r.err.find(marker);
+  ASSERT_NE(at, std::string::npos) << r.err;
+  const std::string statement = r.err.substr(at + marker.size(), r.err.find('\n', at) - at - marker.size());
+  const std::string pinned = dir / "pinned.csg";
+  std::ofstream(pinned) << statement << "\n" << read_file(scene);
+  r = run_capsim("simulate " + pinned + " -o " + (dir / "d.png") + " --size 16x16 --cells 2x2", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(read_file(dir / "c.png") == read_file(dir / "d.png")) << statement;
 }
 
 // The machine traces the tracer's primary rays: orthographic too, and
