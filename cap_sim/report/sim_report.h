@@ -14,6 +14,10 @@
 namespace capsim::sim {
 
 std::string format_report(const SimulationResult& r);
+// The lines of format_report that say what the run came to (what --quiet
+// prints): the header's first line; Max, Min and d over the finish times and
+// over busy time; the frame time; for a sequence, the Table 4-5 form.
+std::string format_summary(const SimulationResult& r);
 nlohmann::json report_json(const SimulationResult& r);
 // The text --report writes: report_json indented by 2, and a newline.
 std::string report_json_text(const SimulationResult& r);

@@ -5,6 +5,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/console.h"
 #include "paper/published_figures.h"
 #include "paper/repro.h"
 #include "report/text_output.h"
@@ -30,6 +31,7 @@ struct ReproCliOptions {
   OptionText<> scenes{"scenes"};
   OptionText<> threads{"0"};
   OptionText<> frames{"64"};
+  bool quiet = false;
 };
 
 }  // namespace
@@ -64,6 +66,7 @@ Command add_repro_command(CLI::App& app) {
   add_option(*cmd, "--threads", o->threads, "Host threads (0 = all); the report does not depend on it",
              host_threads_check())
       ->default_val("0");
+  add_quiet_flag(*cmd, o->quiet, "the summary (the report written and each target met or missed)");
   return [o] {
     sim::ReproOptions options;
     std::tie(options.width, options.height) = pair_value(checked(o->cap_size));
@@ -84,8 +87,10 @@ Command add_repro_command(CLI::App& app) {
         {"--images (graph-4-3.svg)", (images / "graph-4-3.svg").string()}};
     if (!o->json.empty()) files.push_back({"--json", o->json});
     StagedOutputs outputs(files, {});
+    Console console(o->quiet);
+    if (outputs.stdout_taken()) console.divert_to_stderr();
 
-    const ElapsedLog log;
+    const ElapsedLog log(console);
     options.log = log;
     const sim::ReproResult result = sim::run_reproduction(options);
     // The plots' path as the report links them.
@@ -99,9 +104,9 @@ Command add_repro_command(CLI::App& app) {
       sim::write_text_file(outputs["--json"],
                            sim::reproduction_json(result, sim::compared_figures(result, sim::Exclusions::Table44ChessCad)));
     outputs.commit();
-    fmt::print("{}: written ({:.1f} s)\n", o->output, log.seconds());
+    console.summary(fmt::format("{}: written ({:.1f} s)\n", o->output, log.seconds()));
     for (const sim::TargetCheck& c : sim::reproduction_targets(result))
-      fmt::print("  {}: {}\n", c.met ? "met   " : "MISSED", c.target);
+      console.summary(fmt::format("  {}: {}\n", c.met ? "met   " : "MISSED", c.target));
     return 0;
   };
 }
