@@ -19,6 +19,13 @@ std::string processing_name(const SimulationResult& r) {
   return aa ? "antialiasing" : "no antialiasing";
 }
 
+// A sequence's time and max deviation as the paper's Table 4-5 gives them.
+std::string table_4_5_lines(const SimulationResult& r) {
+  return fmt::format("Table 4-5 form, {} frames:\n{:<30} {:>12} {:>15}\n{:<30} {:>10.3f} s {:>13.2f} %\n",
+                     r.screens.size(), "processing", "time", "max deviation", processing_name(r),
+                     r.frame.seconds(r.config.profile.clock_hz), max_deviation_percent(r));
+}
+
 std::string format_sequence(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   std::string out = fmt::format("\n{} frames{}\n{:>6} {:>12} {:>12} {:>8}\n", r.screens.size(),
@@ -41,10 +48,7 @@ std::string format_sequence(const SimulationResult& r) {
   }
   out += "The Max, Min and d above the breakdown compare totals over the whole sequence; the load spread that "
          "costs time is each unit's, from its start (the largest is Table 4-5's max deviation, below).\n";
-  out += fmt::format("\nTable 4-5 form, {} frames:\n{:<30} {:>12} {:>15}\n{:<30} {:>10.3f} s {:>13.2f} %\n",
-                     r.screens.size(), "processing", "time", "max deviation", processing_name(r),
-                     r.frame.seconds(hz), max_deviation_percent(r));
-  return out;
+  return out + "\n" + table_4_5_lines(r);
 }
 
 }  // namespace
@@ -96,6 +100,26 @@ std::string cell_table(const SimulationResult& r, StatisticScope scope, bool sec
   return out;
 }
 
+std::string header_line(const SimulationResult& r) {
+  return fmt::format("CAP simulation: {} cells, {} mode, profile {} ({} Hz), {}x{} pixels\n",
+                     to_string(r.config.cells), to_string(r.config.mode), r.config.profile.name,
+                     r.config.profile.clock_hz, r.width, r.height);
+}
+
+// Max, Min and d over the finish times, the same over busy time, and the
+// frame's time (a sequence's per frame and in all).
+std::string spread_lines(const SimulationResult& r) {
+  const std::uint64_t hz = r.config.profile.clock_hz;
+  const LoadSpread s = load_spread(r);
+  const LoadSpread busy = busy_spread(r);
+  return fmt::format("Max {:.3f} s   Min {:.3f} s   d = (Max - Min) / Max = {:.2f} %\n", s.max_finish.seconds(hz),
+                     s.min_finish.seconds(hz), s.deviation_percent) +
+         fmt::format("busy only (the cycles each cell computed): Max {:.3f} s   Min {:.3f} s   d = {:.2f} %\n",
+                     busy.max_finish.seconds(hz), busy.min_finish.seconds(hz), busy.deviation_percent) +
+         (r.screens.size() > 1 ? fmt::format("{} ({} cycles)\n", sequence_time_text(r), r.frame.count())
+                               : fmt::format("frame time {:.3f} s ({} cycles)\n", r.frame.seconds(hz), r.frame.count()));
+}
+
 std::string format_antialiasing(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   std::string out = fmt::format("\nantialiasing: depth {}, threshold {}, links: {}\n", r.config.aa.depth,
@@ -112,12 +136,15 @@ std::string format_antialiasing(const SimulationResult& r) {
 
 }  // namespace
 
+std::string format_summary(const SimulationResult& r) {
+  std::string out = header_line(r) + spread_lines(r);
+  if (r.screens.size() > 1) out += table_4_5_lines(r);
+  return out;
+}
+
 std::string format_report(const SimulationResult& r, const Provenance* provenance) {
   const std::uint64_t hz = r.config.profile.clock_hz;
-  std::string out = fmt::format(
-      "CAP simulation: {} cells, {} mode, profile {} ({} Hz), {}x{} pixels\n",
-      to_string(r.config.cells), to_string(r.config.mode), r.config.profile.name, hz,
-      r.width, r.height);
+  std::string out = header_line(r);
   out += fmt::format("data broadcast: program {} B, scene {} B, voxel data {} B\n",
                      r.config.profile.program_bytes, r.footprint.scene_bytes(),
                      r.footprint.voxel_bytes());
@@ -128,16 +155,9 @@ std::string format_report(const SimulationResult& r, const Provenance* provenanc
                      r.config.profile.cell_memory_bytes, peak.video_memory_bytes, r.config.profile.video_memory_bytes);
   out += cell_table(r, StatisticScope::Always, true);
 
-  const LoadSpread s = load_spread(r);
-  out += fmt::format("\nMax {:.3f} s   Min {:.3f} s   d = (Max - Min) / Max = {:.2f} %\n",
-                     s.max_finish.seconds(hz), s.min_finish.seconds(hz), s.deviation_percent);
-  const LoadSpread busy = busy_spread(r);
-  out += fmt::format("busy only (the cycles each cell computed): Max {:.3f} s   Min {:.3f} s   d = {:.2f} %\n",
-                     busy.max_finish.seconds(hz), busy.min_finish.seconds(hz), busy.deviation_percent);
-  if (r.screens.size() > 1)
-    out += fmt::format("{} ({} cycles)\n\n", sequence_time_text(r), r.frame.count());
-  else
-    out += fmt::format("frame time {:.3f} s ({} cycles)\n\n", r.frame.seconds(hz), r.frame.count());
+  out += "\n";
+  out += spread_lines(r);
+  out += "\n";
 
   out += "time by process (all cells' work and the host's voxel generation):\n";
   const double total = r.breakdown.total().seconds(hz);

@@ -17,6 +17,11 @@ namespace capsim::sim {
 // With a provenance, the text ends with its block (provenance_text) and the
 // JSON carries it as "provenance".
 std::string format_report(const SimulationResult& r, const Provenance* provenance = nullptr);
+// The lines of format_report that say what the run came to (what --quiet
+// prints): the header's first line; Max, Min and d over the finish times and
+// over busy time; the frame time (a sequence's per frame and in all); for a
+// sequence, the Table 4-5 form.
+std::string format_summary(const SimulationResult& r);
 nlohmann::json report_json(const SimulationResult& r, const Provenance* provenance = nullptr);
 // The text --report writes: report_json indented by 2, and a newline.
 std::string report_json_text(const SimulationResult& r, const Provenance* provenance = nullptr);

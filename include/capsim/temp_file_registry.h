@@ -26,9 +26,10 @@ int register_temp_file(const std::string& path);
 // Forgets a slot register_temp_file returned (-1 is ignored). Thread-safe.
 void unregister_temp_file(int slot);
 
-// Installs the handler for SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGPIPE, SIGXCPU
-// and SIGXFSZ, except for those the process started with ignored (nohup,
-// trap ''), which stay ignored. Call once, from main, before threads start.
+// Installs the handler for SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGXCPU and
+// SIGXFSZ (not SIGPIPE, which main ignores), except for those the process
+// started with ignored (nohup, trap ''), which stay ignored. Call once, from
+// main, before threads start.
 void remove_temp_files_on_signals();
 
 }  // namespace capsim

@@ -8,6 +8,7 @@
 #include "cli/cli_outputs.h"
 #include "cli/cli_usage.h"
 #include "cli/shipped_data.h"
+#include "cli/console.h"
 #include "paper/modes_bench.h"
 #include "paper/modes_page.h"
 #include "report/text_output.h"
@@ -36,6 +37,7 @@ struct BenchOptions {
   std::string html;
   bool update = false;
   OptionText<> threads{"0"};
+  bool quiet = false;
 };
 
 nlohmann::json read_json(const std::string& path) {
@@ -72,6 +74,8 @@ int run_modes(const BenchOptions& o) {
     throw UsageError("--update needs --baseline FILE, the baseline to write");
   const std::string baseline = !o.baseline.empty() ? o.baseline : shipped_baseline(options.width, options.height);
   if (!o.plot.text.empty()) checked(o.plot);
+  if (baseline == kStandardOutputPath)
+    throw UsageError("--baseline -: the baseline is read as well as written, so it cannot be standard output");
   const bool have_baseline = !baseline.empty() && std::filesystem::exists(baseline);
   if (!o.update && !o.baseline.empty() && !have_baseline)
     throw UsageError(fmt::format("--baseline {}: no such file (write one with --update)", shown(baseline)));
@@ -84,10 +88,12 @@ int run_modes(const BenchOptions& o) {
                          {"--baseline", o.update ? baseline : std::string()}},
                         have_baseline && !o.update ? std::vector<std::string>{baseline} : std::vector<std::string>{});
 
-  options.log = [](const std::string& run) { fmt::print(stderr, "{}\n", run); };
+  Console console(o.quiet);
+  if (outputs.stdout_taken()) console.divert_to_stderr();
+  options.log = [&console](const std::string& run) { console.progress(run + "\n"); };
   const sim::ModesBench bench = sim::run_modes_bench(options);
   const nlohmann::json now = sim::modes_bench_json(bench);
-  fmt::print("{}\n", sim::modes_bench_table(bench));
+  console.detail(sim::modes_bench_table(bench) + "\n");
   // The comparison comes before any output is written, for the page to say
   // how it went; a baseline that is not comparable fails the command only
   // after the outputs are in place, as a moved figure does.
@@ -115,32 +121,34 @@ int run_modes(const BenchOptions& o) {
   const std::vector<sim::MovedFigure>& moved = outcome.moved;
   if (o.update) {
     if (!have_baseline) {
-      fmt::print("{}: written ({} runs)\n", baseline, bench.runs.size());
+      console.summary(fmt::format("{}: written ({} runs)\n", baseline, bench.runs.size()));
       return 0;
     }
     if (!outcome.not_comparable.empty()) {
-      fmt::print("{}: rewritten; the old one was not comparable: {}\n", baseline, outcome.not_comparable);
+      console.summary(
+          fmt::format("{}: rewritten; the old one was not comparable: {}\n", baseline, outcome.not_comparable));
       return 0;
     }
     if (moved.empty()) {
-      fmt::print("{}: rewritten; nothing moved\n", baseline);
+      console.summary(fmt::format("{}: rewritten; nothing moved\n", baseline));
     } else {
-      fmt::print("{}: rewritten; {} figures moved:\n\n{}", baseline, moved.size(), sim::format_moved(moved));
+      console.summary(
+          fmt::format("{}: rewritten; {} figures moved:\n\n{}", baseline, moved.size(), sim::format_moved(moved)));
     }
     return 0;
   }
   if (!have_baseline) {
-    fmt::print("no baseline for {}x{}: not compared\n", options.width, options.height);
+    console.summary(fmt::format("no baseline for {}x{}: not compared\n", options.width, options.height));
     return 0;
   }
   if (!outcome.not_comparable.empty()) throw std::runtime_error(outcome.not_comparable);
   if (moved.empty()) {
-    fmt::print("{}: all {} runs identical to the baseline\n", baseline, bench.runs.size());
+    console.summary(fmt::format("{}: all {} runs identical to the baseline\n", baseline, bench.runs.size()));
     return 0;
   }
-  fmt::print("{}: {} figures differ from the baseline:\n\n{}\nIf the change is intended, rerun with --update "
-             "--baseline {} and commit the baseline with it, saying why.\n",
-             baseline, moved.size(), sim::format_moved(moved), baseline);
+  console.summary(fmt::format("{}: {} figures differ from the baseline:\n\n{}\nIf the change is intended, rerun "
+                              "with --update --baseline {} and commit the baseline with it, saying why.\n",
+                              baseline, moved.size(), sim::format_moved(moved), baseline));
   return 1;
 }
 
@@ -171,6 +179,7 @@ Command add_bench_command(CLI::App& app) {
   add_option(*modes, "--threads", o->threads, "Host threads (0 = all); the figures do not depend on it",
              host_threads_check())
       ->default_val("0");
+  add_quiet_flag(*modes, o->quiet, "the verdict (and the figures that moved)");
   return [o, modes] {
     if (modes->parsed()) return run_modes(*o);
     throw UsageError("a benchmark is required (accepted: modes)");

@@ -6,6 +6,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/console.h"
 #include "cli/shipped_data.h"
 #include "paper/calibrate.h"
 #include "paper/calibration.h"
@@ -27,6 +28,7 @@ struct CalibrateCliOptions {
   OptionText<> rounds{"3"};
   OptionText<> scenes;  // default: the shipped models, found (shipped_data.h)
   OptionText<> threads{"0"};
+  bool quiet = false;
 };
 
 }  // namespace
@@ -50,6 +52,7 @@ Command add_calibrate_command(CLI::App& app) {
   add_option(*cmd, "--threads", o->threads, "Host threads (0 = all); the result does not depend on it",
              host_threads_check())
       ->default_val("0");
+  add_quiet_flag(*cmd, o->quiet, "the summary (which round fits best, and its error)");
   return [o] {
     sim::CalibrationOptions options;
     options.rounds = static_cast<int>(whole_value(checked(o->rounds)));
@@ -60,8 +63,10 @@ Command add_calibrate_command(CLI::App& app) {
                                        {"--profiles (m380.json)", (dir / "m380.json").string()}};
     if (!o->alternatives.empty()) files.push_back({"--alternatives", o->alternatives});
     StagedOutputs outputs(files, {});
+    Console console(o->quiet);
+    if (outputs.stdout_taken()) console.divert_to_stderr();
 
-    const ElapsedLog log;
+    const ElapsedLog log(console);
     const sim::Calibration c = sim::calibrate(options, log);
     sim::write_text_file(outputs["--profiles (cap.json)"], sim::calibrated_profile_json(c.x(), sim::Machine::Cap));
     sim::write_text_file(outputs["--profiles (m380.json)"],
@@ -75,11 +80,11 @@ Command add_calibrate_command(CLI::App& app) {
       sim::write_text_file(outputs["--alternatives"], sim::alternatives_markdown(results));
     }
     outputs.commit();
-    fmt::print("round {} of {} fits best: rms ln(ours / paper) {:.4f}\n", c.best, c.rounds.size() - 1,
-               c.rounds[c.best].simulated_rms);
+    console.summary(fmt::format("round {} of {} fits best: rms ln(ours / paper) {:.4f}\n", c.best,
+                                c.rounds.size() - 1, c.rounds[c.best].simulated_rms));
     const std::vector<sim::FitParameter> params = sim::fit_parameters();
     for (std::size_t k = 0; k < params.size(); ++k)
-      fmt::print("  {:<28} {:10.4g} us (M380)\n", sim::profile_key(params[k].term), c.x()[k]);
+      console.detail(fmt::format("  {:<28} {:10.4g} us (M380)\n", sim::profile_key(params[k].term), c.x()[k]));
     return 0;
   };
 }

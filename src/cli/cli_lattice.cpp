@@ -4,6 +4,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/console.h"
 #include "paper/lattice_scene.h"
 #include "report/text_output.h"
 
@@ -47,7 +48,10 @@ Command add_lattice_command(CLI::App& app) {
     const sim::LatticeShape shape = sim::lattice_shape(spheres);
     sim::write_text_file(outputs["--output"], sim::lattice_scene_text(shape, width, height));
     outputs.commit();
-    fmt::print("{}: {} spheres, {} x {} x {}\n", o->output, shape.count(), shape.nx, shape.ny, shape.nz);
+    Console console(false);
+    if (outputs.stdout_taken()) console.divert_to_stderr();
+    console.summary(
+        fmt::format("{}: {} spheres, {} x {} x {}\n", o->output, shape.count(), shape.nx, shape.ny, shape.nz));
     return 0;
   };
 }

@@ -14,14 +14,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Whether two paths name the same file: the same path once symbolic links,
-// "." and ".." are resolved, or, for files that exist, the same inode (hard links).
+// Whether two paths name the same file: the same path once symbolic links
+// (dangling ones too), "." and ".." are resolved, or, for files that exist, the
+// same inode (hard links).
 bool same_file(const std::string& a, const std::string& b) {
   std::error_code ec;
   if (fs::equivalent(a, b, ec)) return true;
   const auto resolved = [](const std::string& p) {
     std::error_code e;
-    const fs::path absolute = fs::absolute(p, e);
+    const fs::path absolute = fs::absolute(follow_links(p), e);
     const fs::path canonical = fs::weakly_canonical(absolute, e);
     return e ? absolute.lexically_normal() : canonical;
   };
@@ -34,8 +35,17 @@ StagedOutputs::StagedOutputs(const std::vector<OutputOption>& outputs, const std
   std::vector<const OutputOption*> given;
   for (const OutputOption& o : outputs)
     if (!o.path.empty()) given.push_back(&o);
+  const OutputOption* to_stdout = nullptr;
   for (std::size_t i = 0; i < given.size(); ++i) {
     const OutputOption& o = *given[i];
+    if (names_standard_output(o.path)) {
+      if (to_stdout)
+        throw UsageError(fmt::format("{} {} is standard output, which {} {} already takes: at most one output can "
+                                     "go to standard output",
+                                     o.option, shown(o.path), to_stdout->option, shown(to_stdout->path)));
+      to_stdout = &o;
+      stdout_taken_ = true;
+    }
     for (std::size_t j = 0; j < i; ++j)
       if (same_file(o.path, given[j]->path))
         throw UsageError(fmt::format("{} {} is the same file as {}: every output needs a file of its own",
@@ -63,11 +73,5 @@ PendingFile& StagedOutputs::operator[](const std::string& option) {
 }
 
 void StagedOutputs::commit() { commit_all(files_); }
-
-double ElapsedLog::seconds() const {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-}
-
-void ElapsedLog::operator()(const std::string& what) const { fmt::print(stderr, "[{:7.1f} s] {}\n", seconds(), what); }
 
 }  // namespace capsim::cli

@@ -1,12 +1,12 @@
 #pragma once
 // The files a command writes, checked and reserved before any work: each is a
-// different file, none is one of the command's inputs, and each can be created
-// (PendingFile). They are written under temporary names and put in place only
-// once all are complete, so a failure leaves none of them changed.
+// different file, at most one is standard output ("-" or the file stdout is),
+// none is one of the command's inputs, and each can be created (PendingFile).
+// They are written under temporary names and put in place only once all are
+// complete, so a failure leaves none of them changed.
 
 #include "capsim/pending_file.h"
 
-#include <chrono>
 #include <string>
 #include <vector>
 
@@ -27,24 +27,17 @@ class StagedOutputs {
   // The pending file of an output asked for. Precondition: its path was not empty.
   PendingFile& operator[](const std::string& option);
 
-  // Puts every output in place, in the order given.
+  // Puts every output in place (commit_all).
   void commit();
 
+  // Whether an output goes to standard output: the command's own lines then go
+  // to stderr (Console::divert_to_stderr).
+  bool stdout_taken() const { return stdout_taken_; }
+
  private:
+  bool stdout_taken_ = false;
   std::vector<std::string> options_;
   std::vector<PendingFile> files_;
-};
-
-// Timed lines on stderr for the long paper commands (repro, calibrate): what
-// each is doing, after the seconds since it began.
-class ElapsedLog {
- public:
-  ElapsedLog() : start_(std::chrono::steady_clock::now()) {}
-  double seconds() const;
-  void operator()(const std::string& what) const;  // "[   12.3 s] what"
-
- private:
-  std::chrono::steady_clock::time_point start_;
 };
 
 }  // namespace capsim::cli

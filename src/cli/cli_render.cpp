@@ -5,6 +5,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/console.h"
 
 #include <memory>
 #include <vector>
@@ -13,9 +14,11 @@ namespace capsim::cli {
 
 Command add_render_command(CLI::App& app) {
   auto opts = std::make_shared<TracerOptions>();
+  auto quiet = std::make_shared<bool>(false);
   CLI::App* cmd = app.add_subcommand("render", "Render a CSG scene file with the paper's tracer");
   add_tracer_options(*cmd, *opts);
-  return [opts] {
+  add_quiet_flag(*cmd, *quiet, "");  // render prints no summary: --quiet drops the percentage on a terminal
+  return [opts, quiet] {
     const TracerSettings settings = check_tracer_options(*opts);
     const int frames = settings.frames;
     const bool numbered = settings.numbered_outputs();
@@ -38,7 +41,7 @@ Command add_render_command(CLI::App& app) {
     print_cameras(settings, scenes);
     const int width = scenes[0].camera.width, height = scenes[0].camera.height;
     Progress progress(frames == 1 ? "rendering" : "frames", frames == 1 ? render_work(width, height, aa) : frames,
-                      Progress::stderr_is_terminal());
+                      Console(*quiet).progress_bar());
     for (int k = 0; k < frames; ++k) {
       const Tracer tracer(scenes[k], settings.trace);
       Progress* rows = frames == 1 ? &progress : nullptr;

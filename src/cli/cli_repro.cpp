@@ -6,6 +6,7 @@
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
+#include "cli/console.h"
 #include "cli/shipped_data.h"
 #include "paper/published_figures.h"
 #include "paper/repro.h"
@@ -34,6 +35,7 @@ struct ReproCliOptions {
   OptionText<> scenes;  // default: the shipped models, found (shipped_data.h)
   OptionText<> threads{"0"};
   OptionText<> frames{"64"};
+  bool quiet = false;
 };
 
 // The default images directory (images/ beside the report), made when it is
@@ -89,6 +91,7 @@ Command add_repro_command(CLI::App& app) {
   add_option(*cmd, "--threads", o->threads, "Host threads (0 = all); the report does not depend on it",
              host_threads_check())
       ->default_val("0");
+  add_quiet_flag(*cmd, o->quiet, "the summary (the report written and each target met or missed)");
   return [o] {
     sim::ReproOptions options;
     std::tie(options.width, options.height) = pair_value(checked(o->cap_size));
@@ -111,8 +114,10 @@ Command add_repro_command(CLI::App& app) {
     std::optional<MadeDirectory> made;
     if (o->images.empty()) made.emplace(images);
     StagedOutputs outputs(files, {});
+    Console console(o->quiet);
+    if (outputs.stdout_taken()) console.divert_to_stderr();
 
-    const ElapsedLog log;
+    const ElapsedLog log(console);
     options.log = log;
     const sim::ReproResult result = sim::run_reproduction(options);
     // The plots' path as the report links them.
@@ -129,9 +134,9 @@ Command add_repro_command(CLI::App& app) {
     }
     outputs.commit();
     if (made) made->keep();
-    fmt::print("{}: written ({:.1f} s)\n", o->output, log.seconds());
+    console.summary(fmt::format("{}: written ({:.1f} s)\n", o->output, log.seconds()));
     for (const sim::TargetCheck& c : sim::reproduction_targets(result))
-      fmt::print("  {}: {}\n", c.met ? "met   " : "MISSED", c.target);
+      console.summary(fmt::format("  {}: {}\n", c.met ? "met   " : "MISSED", c.target));
     return 0;
   };
 }

@@ -2,11 +2,11 @@
 // operation's cost in integer cycles of the cell's clock inside an
 // event-driven machine.
 
-#include "capsim/progress.h"
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/cli_usage.h"
+#include "cli/console.h"
 #include "machine/machine.h"
 #include "paper/simulate_command.h"
 #include "report/heatmap.h"
@@ -39,6 +39,7 @@ struct SimulateOptions {
   OptionText<> heatmap;  // PNG path; empty = none
   std::string html;      // HTML report path; empty = none
   bool frame_average = false;
+  bool quiet = false;
 };
 
 // The run's settings, for the command line the HTML report gives.
@@ -184,6 +185,9 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
                         "Frame-averaged distribution (dot mode): the dot pattern turns every frame, and the cells "
                         "run through groups of RxC frames without waiting for each other (docs/animation.md)"),
           flag_values());
+  add_quiet_flag(*cmd, sim->quiet,
+                 "the summary (the header's first line, Max, Min and d, the frame time and, for a sequence, the "
+                 "Table 4-5 form)");
 
   return [opts, sim, argv] {
     const TracerSettings settings = check_tracer_options(*opts);
@@ -204,6 +208,8 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
                                                            {"--html", sim->html}})
       staged.push_back(o);
     StagedOutputs outputs(staged, inputs);
+    Console console(sim->quiet);
+    if (outputs.stdout_taken()) console.divert_to_stderr();
     config.profile = sim::load_cost_profile(sim->profile.text);
     warn_of_rounding(config.profile);
     config.completion_cycles = !sim->html.empty();
@@ -220,7 +226,7 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
       frame_tracers.push_back(tracers.back().get());
     }
     const sim::SimulationResult result =
-        sim::simulate_frames(frame_tracers, config, settings.threads, Progress::stderr_is_terminal());
+        sim::simulate_frames(frame_tracers, config, settings.threads, console.progress_bar());
     // Reading the scenes, tracing and simulating: what the HTML report gives as the host's time.
     const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - started;
 
@@ -252,7 +258,10 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
       sim::write_text_file(outputs["--html"], sim::html_report(result, facts));
     }
     outputs.commit();
-    fmt::print("{}", sim::format_report(result, &provenance));
+    if (sim->quiet)
+      console.summary(sim::format_summary(result));
+    else
+      console.summary(sim::format_report(result, &provenance));
     return 0;
   };
 }

@@ -8,8 +8,11 @@
 #include <fmt/core.h>
 #include <malloc.h>
 
+#include <csignal>
+#include <cstdio>
 #include <exception>
 #include <new>
+#include <string>
 
 namespace {
 
@@ -24,11 +27,19 @@ void keep_freed_memory() {
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
 }
 
+// An error message on stderr; a stderr that cannot take it has no better
+// place to be told, so a failure to write it is let go.
+void tell(const std::string& text) { std::fputs((text + "\n").c_str(), stderr); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
   keep_freed_memory();
   capsim::remove_temp_files_on_signals();  // before TBB starts any thread
+  // A reader of stdout that goes away (`capsim ... | head -1`) makes writes
+  // fail with EPIPE rather than end the process: the outputs are still written
+  // (cli/console.h), and an output that is stdout itself fails with a message.
+  std::signal(SIGPIPE, SIG_IGN);
   CLI::App app{
       "capsim: a simulator of Fujitsu's Cellular Array Processor (CAP) running the CSG\n"
       "ray tracer of Murakami, Sato and Hirota. The model charges each operation's cost\n"
@@ -60,16 +71,16 @@ int main(int argc, char** argv) {
         "a command is required (accepted: render, simulate, lattice, repro, bench, calibrate; capsim --help "
         "describes them)");
   } catch (const UsageError& e) {
-    fmt::print(stderr, "{}: {}\n", capsim::cli::command_name(app), e.what());
+    tell(fmt::format("{}: {}", capsim::cli::command_name(app), e.what()));
     return 2;
   } catch (const capsim::SceneError& e) {
-    fmt::print(stderr, "{}\n", e.what());  // FILE:LINE:COL: message, as compilers print
+    tell(e.what());  // FILE:LINE:COL: message, as compilers print
     return 1;
   } catch (const std::bad_alloc&) {
-    fmt::print(stderr, "{}: out of memory\n", capsim::cli::command_name(app));
+    tell(fmt::format("{}: out of memory", capsim::cli::command_name(app)));
     return 1;
   } catch (const std::exception& e) {
-    fmt::print(stderr, "capsim: {}\n", e.what());
+    tell(fmt::format("capsim: {}", e.what()));
     return 1;
   }
 }

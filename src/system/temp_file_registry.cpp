@@ -25,7 +25,8 @@ static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads t
 
 Slot slots[kSlots];
 
-constexpr int kSignals[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGPIPE, SIGXCPU, SIGXFSZ};
+// Not SIGPIPE: capsim ignores it and handles EPIPE where it writes.
+constexpr int kSignals[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGXCPU, SIGXFSZ};
 
 // A slot is rewritten only after it went back to kFree, so a handler that sees
 // kArmed reads a complete path. (A slot freed and filled again, on another

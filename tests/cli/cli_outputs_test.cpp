@@ -13,13 +13,6 @@ namespace {
 
 const std::string kBalls = scene_path("balls.csg");
 
-std::vector<std::string> entries(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 struct OutputCase {
   std::string name;
   std::string options;  // D stands for the test's directory
@@ -44,11 +37,11 @@ TEST_P(CliOutputRefused, BeforeAnyWorkWithNothingWritten) {
   std::filesystem::create_directory(dir / "folder.png");
   std::ofstream(dir / "plain") << "a file\n";
   std::ofstream(dir / "broken.csg") << "sphere(;\n";
-  const std::vector<std::string> before = entries(dir.path());
+  const std::vector<std::string> before = directory_entries(dir.path());
   const RunResult r = run_capsim("simulate " + (dir / "broken.csg") + " --size 8x8 " + in_dir(GetParam().options, dir.path().string()), dir);
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "capsim simulate: " + in_dir(GetParam().message, dir.path().string()) + "\n");
-  EXPECT_EQ(entries(dir.path()), before);
+  EXPECT_EQ(directory_entries(dir.path()), before);
   EXPECT_EQ(read_file(dir / "plain"), "a file\n");
 }
 
@@ -83,7 +76,7 @@ TEST(CliOutputs, ASuccessfulRunLeavesItsOutputsAndNothingElse) {
   const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 8x8 --report " + (dir / "r.json") +
                                      " --trace " + (dir / "t.json") + " --heatmap " + (dir / "h.png"), dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"h.png", "r.json", "s.png", "t.json"}));
+  EXPECT_EQ(directory_entries(dir.path()), (std::vector<std::string>{"h.png", "r.json", "s.png", "t.json"}));
 }
 
 TEST(CliOutputs, ExistingOutputsAreReplacedOnlyWhenAllAreComplete) {
@@ -96,7 +89,7 @@ TEST(CliOutputs, ExistingOutputsAreReplacedOnlyWhenAllAreComplete) {
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(read_file(dir / "s.png"), "old screen");
   EXPECT_EQ(read_file(dir / "r.json"), "old report");
-  EXPECT_EQ(entries(dir.path()), (std::vector<std::string>{"r.json", "s.png"}));
+  EXPECT_EQ(directory_entries(dir.path()), (std::vector<std::string>{"r.json", "s.png"}));
 }
 
 // A write that fails (here a file-size limit, with SIGXFSZ ignored so that the
@@ -110,17 +103,17 @@ TEST(CliOutputs, AWriteErrorNamesTheReasonAndLeavesNoOutput) {
                                " --heatmap " + (dir / "h.png"), dir, limit);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "capsim: " + (dir / "r.json") + ": File too large\n");
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 
   r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 8x8 --heatmap " + (dir / "h.png"), dir, limit);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "capsim: " + (dir / "h.png") + ": File too large\n");
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 
   r = run_capsim("render " + kBalls + " -o " + (dir / "b.png") + " --size 64x64", dir, limit);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "capsim: " + (dir / "b.png") + ": File too large\n");
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 
   // OpenEXR's message names the file it wrote: the output, not its temporary name.
   r = run_capsim("render " + kBalls + " -o " + (dir / "b.exr") + " --size 64x64", dir, limit);
@@ -128,7 +121,7 @@ TEST(CliOutputs, AWriteErrorNamesTheReasonAndLeavesNoOutput) {
   EXPECT_EQ(r.err.rfind("capsim: " + (dir / "b.exr") + ": ", 0), 0u) << r.err;
   EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find(".tmp"), std::string::npos) << r.err;
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 }
 
 }  // namespace

@@ -17,15 +17,8 @@ namespace {
 
 const std::string kBalls = scene_path("balls.csg");
 
-std::vector<std::string> entries(const std::filesystem::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 bool holds_a_temporary_file(const std::filesystem::path& dir) {
-  for (const std::string& name : entries(dir))
+  for (const std::string& name : directory_entries(dir))
     if (name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0) return true;
   return false;
 }
@@ -76,7 +69,7 @@ TEST_P(CliSignal, EndsTheProcessAndRemovesTheTemporaryFiles) {
   EXPECT_TRUE(staged) << "no temporary file appeared before the scene was read";
   ASSERT_TRUE(WIFSIGNALED(status)) << "exit status " << WEXITSTATUS(status);
   EXPECT_EQ(WTERMSIG(status), GetParam());
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{"scene.csg"});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{"scene.csg"});
 }
 
 INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
@@ -90,16 +83,16 @@ TEST(CliSignal, FileSizeLimitLeavesNoTemporaryFile) {
   const std::string limit = "ulimit -f 2;";  // 1 KiB (dash) or 2 KiB (bash)
   RunResult r = run_capsim("render " + kBalls + " -o " + (dir / "b.png") + " --size 64x64", dir, limit);
   EXPECT_EQ(r.signal, SIGXFSZ);
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 
   r = run_capsim("render " + kBalls + " -o " + (dir / "b.exr") + " --size 64x64", dir, limit);
   EXPECT_EQ(r.signal, SIGXFSZ);
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 
   r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") + " --size 8x8 --report " + (dir / "r.json") +
                      " --trace " + (dir / "t.json"), dir, limit);
   EXPECT_EQ(r.signal, SIGXFSZ);
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 }
 
 TEST(CliSignal, AnIgnoredSignalStaysIgnored) {
@@ -111,7 +104,7 @@ TEST(CliSignal, AnIgnoredSignalStaysIgnored) {
   EXPECT_EQ(r.signal, 0);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err, "capsim: " + (dir / "b.png") + ": File too large\n");
-  EXPECT_EQ(entries(dir.path()), std::vector<std::string>{});
+  EXPECT_EQ(directory_entries(dir.path()), std::vector<std::string>{});
 }
 
 }  // namespace

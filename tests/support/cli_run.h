@@ -14,6 +14,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace capsim::testing {
 
@@ -29,6 +30,14 @@ inline std::string read_file(const std::filesystem::path& p) {
   std::ostringstream s;
   s << f.rdbuf();
   return s.str();
+}
+
+// The names in dir, sorted.
+inline std::vector<std::string> directory_entries(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 // A fresh directory for one test's files, removed when the test ends.
@@ -55,11 +64,13 @@ class TempDir {
 // .stdout and .stderr, which are removed again. args are passed through the
 // shell as written; quote paths with spaces. shell_setup, if given, runs in
 // that shell first (e.g. "ulimit -f 2;"), and the program then replaces the
-// shell, so a signal that ends it is reported.
+// shell, so a signal that ends it is reported. launcher, if given, is a
+// command that runs the program (e.g. one that drops privileges, as_user.h).
 inline RunResult run_program(const std::string& program, const std::string& args, const TempDir& dir,
-                             const std::string& shell_setup = "") {
+                             const std::string& shell_setup = "", const std::string& launcher = "") {
   const std::string out = dir / ".stdout", err = dir / ".stderr";
-  const std::string cmd = shell_setup + " exec " + program + " " + args + " >" + out + " 2>" + err;
+  const std::string cmd =
+      shell_setup + " exec " + launcher + " " + program + " " + args + " >" + out + " 2>" + err;
   const int raw = std::system(cmd.c_str());
   RunResult r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -72,8 +83,9 @@ inline RunResult run_program(const std::string& program, const std::string& args
 }
 
 // The build's capsim, as run_program runs it.
-inline RunResult run_capsim(const std::string& args, const TempDir& dir, const std::string& shell_setup = "") {
-  return run_program(CAPSIM_EXE, args, dir, shell_setup);
+inline RunResult run_capsim(const std::string& args, const TempDir& dir, const std::string& shell_setup = "",
+                            const std::string& launcher = "") {
+  return run_program(CAPSIM_EXE, args, dir, shell_setup, launcher);
 }
 
 // The same, with `cwd` as its current directory.
