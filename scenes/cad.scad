@@ -57,7 +57,8 @@
 // cad.csg is this file exported by OpenSCAD 2021.01 (an absolute -o path,
 // because OpenSCAD writes a relative one beside the input):
 //   openscad -o "$PWD/scenes/cad.csg" scenes/cad.scad
-// capsim renders the export as is, with its default view and light.
+// capsim renders the export with its default light, seen from the camera
+// statement kept at the top of cad.csg (docs/models.md).
 //
 // Units: millimetres. The shaft's axis is the x axis (before the tip), from
 // x = -165 to 165; the shaft's steps are 6.6 to 8.8 in radius, and the

@@ -6,7 +6,8 @@
 // chess.csg is this file exported by OpenSCAD 2021.01 (an absolute -o path,
 // because OpenSCAD writes a relative one beside the input):
 //   openscad -o "$PWD/scenes/chess.csg" scenes/chess.scad
-// capsim renders the export as is, with its default view and light.
+// capsim renders the export with its default light, seen from the camera
+// statement kept at the top of chess.csg (docs/models.md).
 //
 // Units: a square is 10 x 10; file a..h runs along +x, rank 1..8 along +y,
 // White at rank 1 (nearest OpenSCAD's default view).

@@ -32,7 +32,8 @@
 // piston.csg is this file exported by OpenSCAD 2021.01 (an absolute -o path,
 // because OpenSCAD writes a relative one beside the input):
 //   openscad -o "$PWD/scenes/piston.csg" scenes/piston.scad
-// capsim renders the export as is, with its default view and light.
+// capsim renders the export with its default light, seen from the camera
+// statement kept at the top of piston.csg (docs/models.md).
 //
 // Units: millimetres. The column's axis is z at x = y = 0: the piston's skirt
 // at z = 30, the rod's small end at z = -47; the wrist pin lies along y, as in

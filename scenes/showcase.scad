@@ -2,7 +2,8 @@
 // scene format supports. showcase.csg is this file exported by OpenSCAD 2021.01,
 // run in this directory (OpenSCAD resolves -o relative to the input file):
 //   openscad -o showcase.csg showcase.scad
-// capsim renders the export as is (spheres, boxes and cones traced exactly).
+// capsim renders the export (spheres, boxes and cones traced exactly) from the
+// camera statement kept at the top of showcase.csg (docs/models.md).
 
 $fn = 64;  // only smooths OpenSCAD's own preview; capsim ignores it
 

@@ -1,5 +1,6 @@
 #pragma once
-// The box OpenSCAD frames a CSG tree by, for its --viewall.
+// Boxes a view frames a CSG tree by: what the tree leaves (capsim's default
+// view) and what OpenSCAD's preview draws (its --viewall).
 
 #include "capsim/primitive_geometry.h"
 
@@ -15,5 +16,11 @@ namespace capsim {
 // common part (OpenSCAD's CSGProduct::getBoundingBox extends where it "should
 // intersect").
 Aabb openscad_preview_bounds(const CsgNode& node, const std::vector<PreparedPrimitive>& prims);
+
+// A box holding what the CSG tree leaves: a union's is the union of its
+// children's, an intersection's their common part, a difference's its first
+// child's (what is subtracted only removes). Empty when the boxes show that
+// nothing is left (an intersection of boxes that do not meet).
+Aabb csg_result_bounds(const CsgNode& node, const std::vector<PreparedPrimitive>& prims);
 
 }  // namespace capsim

@@ -39,8 +39,8 @@ struct PreparedScene {
 };
 
 // The box a view frames: with OpenSCAD's options, the one OpenSCAD's preview
-// frames (openscad_preview_bounds), else that of every placed primitive (the
-// voxel grid's universe: the shipped models' views and cycles rest on it).
+// frames (openscad_preview_bounds), else that of what the CSG tree leaves
+// (csg_result_bounds); the voxel grid's universe when either is empty.
 Aabb framed_bounds(const PreparedScene& scene);
 
 // The camera used when a scene has none: looking at the centre of the bounds from

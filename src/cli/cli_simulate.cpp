@@ -63,6 +63,13 @@ sim::SimulateSettings run_settings(const TracerSettings& t, const sim::MachineCo
   return s;
 }
 
+// OpenSCAD's camera options as the run took them: null when none was given.
+nlohmann::json view_options(const std::optional<OpenScadCameraOptions>& v) {
+  if (!v) return nullptr;
+  return {{"camera", v->camera}, {"viewall", v->viewall}, {"autocenter", v->autocenter},
+          {"projection", to_string(v->projection)}};
+}
+
 // Where the run came from (report/provenance.h): every option with the value
 // the run used, each named as on the command line.
 sim::Provenance run_provenance(const std::vector<std::string>& argv, const TracerSettings& t,
@@ -97,7 +104,13 @@ sim::Provenance run_provenance(const std::vector<std::string>& argv, const Trace
                {"trace", path_or_null(o.trace)},
                {"heatmap", path_or_null(o.heatmap.text)},
                {"html", path_or_null(o.html)},
-               {"frame_average", config.frame_average}};
+               {"frame_average", config.frame_average},
+               {"defines", t.defines},
+               {"camera", view_options(t.prepare.openscad)},
+               {"view", scenes.empty() ? json() : json(camera_arguments(scenes.front().camera))},
+               {"view_statement", scenes.empty() ? json() : json(camera_statement(scenes.front().camera))},
+               {"verbose", t.verbose},
+               {"quiet", o.quiet}};
   return p;
 }
 

@@ -74,4 +74,21 @@ Aabb openscad_preview_bounds(const CsgNode& node, const std::vector<PreparedPrim
   return preview(node, prims).drawn[0];
 }
 
+Aabb csg_result_bounds(const CsgNode& n, const std::vector<PreparedPrimitive>& prims) {
+  if (n.is_leaf) return prims[static_cast<std::size_t>(n.primitive)].world_bounds;
+  Aabb r;
+  bool first = true;
+  for (const CsgNode& child : n.children) {
+    if (!first && n.op == CsgOp::Difference) break;
+    const Aabb c = csg_result_bounds(child, prims);
+    if (first || n.op == CsgOp::Union) {
+      r.extend(c);
+    } else {
+      r = intersection(r, c);
+    }
+    first = false;
+  }
+  return r;
+}
+
 }  // namespace capsim

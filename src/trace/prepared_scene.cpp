@@ -41,11 +41,10 @@ Camera framing_camera(const PreparedScene& ps, const Aabb& bounds) {
 }  // namespace
 
 Aabb framed_bounds(const PreparedScene& ps) {
-  const Aabb universe = universe_of(ps.prims, ps.placed);
-  if (!ps.openscad) return universe;
-  const Aabb b = openscad_preview_bounds(ps.scene.root, ps.prims);
-  // Nothing drawn positively (boxes that do not meet): framed by every solid.
-  return b.empty() ? universe : b;
+  const Aabb b = ps.openscad ? openscad_preview_bounds(ps.scene.root, ps.prims)
+                             : csg_result_bounds(ps.scene.root, ps.prims);
+  // Nothing drawn or left (boxes that do not meet): framed by every solid.
+  return b.empty() ? universe_of(ps.prims, ps.placed) : b;
 }
 
 Camera default_camera(const Aabb& bounds, int width, int height) {

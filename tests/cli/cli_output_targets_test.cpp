@@ -7,6 +7,7 @@
 
 #include "support/as_user.h"
 #include "support/cli_run.h"
+#include "support/provenance.h"
 
 #include <fcntl.h>
 #include <sys/socket.h>
@@ -63,7 +64,12 @@ class CliOutputTargets : public ::testing::TestWithParam<User> {
                       "", launcher_);
   }
 
-  // The report a run writes to a plain new file, removed after reading.
+  // A report as the runs compared here give it alike: without the provenance's
+  // command line and --report path, which name each run's target.
+  static std::string comparable(const std::string& report) { return without_argv_and(report, {"report"}); }
+
+  // The report a run writes to a plain new file, removed after reading
+  // (comparable).
   std::string reference_report() {
     const RunResult r = simulate("--report " + (dir_ / "reference.json"));
     EXPECT_EQ(r.status, 0) << r.err;
@@ -71,7 +77,7 @@ class CliOutputTargets : public ::testing::TestWithParam<User> {
     fs::remove(dir_ / "reference.json");
     fs::remove(dir_ / "s.png");
     EXPECT_FALSE(text.empty());
-    return text;
+    return comparable(text);
   }
 
   TempDir dir_;
@@ -83,7 +89,7 @@ TEST_P(CliOutputTargets, ARegularFileIsReplacedWhole) {
   std::ofstream(dir_ / "r.json") << "old";
   const RunResult r = simulate("--report " + (dir_ / "r.json"));
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(dir_ / "r.json"), report);
+  EXPECT_EQ(comparable(read_file(dir_ / "r.json")), report);
   EXPECT_EQ(directory_entries(dir_.path()), (std::vector<std::string>{"r.json", "s.png"}));
 }
 
@@ -95,7 +101,7 @@ TEST_P(CliOutputTargets, ASymbolicLinkIsFollowedAndStaysALink) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_TRUE(fs::is_symlink(dir_ / "link.json"));
   EXPECT_EQ(fs::read_symlink(dir_ / "link.json"), "real.json");
-  EXPECT_EQ(read_file(dir_ / "real.json"), report);
+  EXPECT_EQ(comparable(read_file(dir_ / "real.json")), report);
   EXPECT_EQ(directory_entries(dir_.path()), (std::vector<std::string>{"link.json", "real.json", "s.png"}));
 }
 
@@ -110,7 +116,7 @@ TEST_P(CliOutputTargets, AChainOfLinksIsResolvedFully) {
   fs::create_symlink("real.json", dir_ / "sub/c.json");
   const RunResult r = simulate("--report " + (dir_ / "a.json"));
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(dir_ / "sub/real.json"), report);
+  EXPECT_EQ(comparable(read_file(dir_ / "sub/real.json")), report);
   EXPECT_EQ(fs::read_symlink(dir_ / "a.json"), "b.json");
   EXPECT_EQ(fs::read_symlink(dir_ / "b.json"), "sub/c.json");
   EXPECT_EQ(fs::read_symlink(dir_ / "sub/c.json"), "real.json");
@@ -123,7 +129,7 @@ TEST_P(CliOutputTargets, ADanglingLinkCreatesTheFileItNames) {
   fs::create_symlink("sub/new.json", dir_ / "link.json");
   RunResult r = simulate("--report " + (dir_ / "link.json"));
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(read_file(dir_ / "sub/new.json"), report);
+  EXPECT_EQ(comparable(read_file(dir_ / "sub/new.json")), report);
   EXPECT_EQ(fs::read_symlink(dir_ / "link.json"), "sub/new.json");
 
   // One whose directory does not exist is refused, naming that directory.
@@ -142,7 +148,7 @@ TEST_P(CliOutputTargets, AFifoIsWrittenThrough) {
   FifoReader reader(fifo);
   const RunResult r = simulate("--report " + fifo);
   EXPECT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(reader.finish(), report);
+  EXPECT_EQ(comparable(reader.finish()), report);
   struct stat st {};
   ASSERT_EQ(::lstat(fifo.c_str(), &st), 0);
   EXPECT_TRUE(S_ISFIFO(st.st_mode));
@@ -154,7 +160,7 @@ TEST_P(CliOutputTargets, DashIsStandardOutput) {
   const std::string report = reference_report();
   const RunResult r = simulate("--report -");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out, report);
+  EXPECT_EQ(comparable(r.out), report);
   EXPECT_EQ(r.err.rfind("CAP simulation: 2x2 cells", 0), 0u) << r.err;
   EXPECT_EQ(directory_entries(dir_.path()), std::vector<std::string>{"s.png"});
 

@@ -75,8 +75,33 @@ TEST(CliProvenance, ReportNamesTheCommandVersionInputsAndEveryOption) {
                                    {"trace", nullptr},
                                    {"heatmap", nullptr},
                                    {"html", nullptr},
-                                   {"frame_average", false}};
+                                   {"frame_average", false},
+                                   {"defines", nlohmann::json::array()},
+                                   {"camera", nullptr},
+                                   {"view", "--camera=14,-18,11,0,0,0 --projection=perspective"},
+                                   {"view_statement", "camera(eye = [14, -18, 11], center = [0, 0, 0], up = [0, 0, 1], "
+                                                      "fov = 40);"},
+                                   {"verbose", false},
+                                   {"quiet", false}};
   EXPECT_EQ(o, expected) << o.dump(2);
+}
+
+// OpenSCAD's view options are recorded as taken, beside the view they gave.
+TEST(CliProvenance, ReportRecordsOpenScadsViewOptions) {
+  TempDir dir;
+  const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") +
+                                     " --size 16x16 --cells 2x2 --camera=0,0,0,55,0,25,30 --projection=o --quiet "
+                                     "--report " + (dir / "r.json"),
+                                 dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json o = report_of(dir, "r.json")["provenance"]["options"];
+  EXPECT_EQ(o["camera"], (nlohmann::json{{"camera", {0, 0, 0, 55, 0, 25, 30}},
+                                         {"viewall", false},
+                                         {"autocenter", false},
+                                         {"projection", "ortho"}}))
+      << o.dump(2);
+  EXPECT_NE(o["view"].get<std::string>().find("--projection=ortho"), std::string::npos) << o.dump(2);
+  EXPECT_EQ(o["quiet"], true);
 }
 
 // The defaults are recorded as the values the run used: the camera's size,

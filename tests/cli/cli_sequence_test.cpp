@@ -143,7 +143,7 @@ TEST(FrameSequence, FramesWithoutACameraShareTheOneThatFramesThemAll) {
   const capsim::Camera own = frames[3].camera;
   capsim::frame_sequence(frames);
   capsim::Aabb all;
-  for (int k = 0; k < 4; ++k) all.extend(capsim::universe_of(frames[k].prims, frames[k].placed));
+  for (int k = 0; k < 4; ++k) all.extend(capsim::framed_bounds(frames[k]));
   const capsim::Camera shared = capsim::default_camera(all, 32, 24);
   for (int k = 0; k < 3; ++k) {
     EXPECT_EQ(frames[k].camera.eye, shared.eye) << k;

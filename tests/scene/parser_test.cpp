@@ -1226,7 +1226,7 @@ TEST(ParserScenes, ShowcaseHasAllKindsAndOperators) {
   };
   visit(visit, s.root);
   EXPECT_TRUE(ops[0] && ops[1] && ops[2]);
-  EXPECT_FALSE(s.camera.has_value());  // the raw export: default camera and light
+  EXPECT_TRUE(s.camera.has_value());  // the pinned view (docs/models.md); the default light
   EXPECT_TRUE(s.lights.empty());
 }
 

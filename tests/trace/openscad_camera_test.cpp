@@ -128,17 +128,25 @@ TEST(OpenScadCamera, ArgumentsGiveTheView) {
   EXPECT_FALSE(expressible_as_openscad(c));
 }
 
+// Four boxes: A [0, 4]^3, B [2, 6]^3 overlapping it, C [3, 3.5]^3 inside
+// both, D [20, 21] x [0, 1]^2 apart.
+std::vector<PreparedPrimitive> four_boxes() {
+  std::vector<PreparedPrimitive> pp;
+  for (const Primitive& p : {box({0, 0, 0}, {4, 4, 4}), box({2, 2, 2}, {4, 4, 4}), box({3, 3, 3}, {0.5, 0.5, 0.5}),
+                             box({20, 0, 0}, {1, 1, 1})})
+    pp.push_back(prepare_primitive(p));
+  return pp;
+}
+
+void expect_box(const Aabb& b, glm::dvec3 lo, glm::dvec3 hi) {
+  expect_near(b.lo, lo);
+  expect_near(b.hi, hi);
+}
+
 // OpenSCAD's preview box: the solids drawn positively, an intersection's
 // children all framed.
 TEST(CsgBounds, PreviewBoxes) {
-  const std::vector<Primitive> prims = {box({0, 0, 0}, {4, 4, 4}), box({2, 2, 2}, {4, 4, 4}),
-                                        box({3, 3, 3}, {0.5, 0.5, 0.5}), box({20, 0, 0}, {1, 1, 1})};
-  std::vector<PreparedPrimitive> pp;
-  for (const Primitive& p : prims) pp.push_back(prepare_primitive(p));
-  auto expect_box = [](const Aabb& b, glm::dvec3 lo, glm::dvec3 hi) {
-    expect_near(b.lo, lo);
-    expect_near(b.hi, hi);
-  };
+  const std::vector<PreparedPrimitive> pp = four_boxes();
   const CsgNode diff = op(CsgOp::Difference, {leaf(0), leaf(1)});
   expect_box(openscad_preview_bounds(diff, pp), {0, 0, 0}, {4, 4, 4});
   const CsgNode inter = op(CsgOp::Intersection, {leaf(0), leaf(1)});
@@ -152,6 +160,36 @@ TEST(CsgBounds, PreviewBoxes) {
   expect_box(openscad_preview_bounds(nested_far, pp), {0, 0, 0}, {4, 4, 4});  // B - D keeps B's box: D pruned
   // An intersection of boxes that do not meet is empty.
   EXPECT_TRUE(openscad_preview_bounds(op(CsgOp::Intersection, {leaf(0), leaf(3)}), pp).empty());
+}
+
+// What the CSG leaves: a difference its first child, an intersection the
+// common part, a union everything; capsim's default view frames it.
+TEST(CsgBounds, ResultBoxes) {
+  const std::vector<PreparedPrimitive> pp = four_boxes();
+  expect_box(csg_result_bounds(op(CsgOp::Difference, {leaf(0), leaf(3)}), pp), {0, 0, 0}, {4, 4, 4});
+  expect_box(csg_result_bounds(op(CsgOp::Difference, {leaf(1), leaf(0), leaf(3)}), pp), {2, 2, 2}, {6, 6, 6});
+  const CsgNode inter = op(CsgOp::Intersection, {leaf(0), leaf(1)});
+  expect_box(csg_result_bounds(inter, pp), {2, 2, 2}, {4, 4, 4});
+  expect_box(csg_result_bounds(op(CsgOp::Union, {inter, leaf(3)}), pp), {2, 0, 0}, {21, 4, 4});
+  EXPECT_TRUE(csg_result_bounds(op(CsgOp::Intersection, {leaf(0), leaf(3)}), pp).empty());
+}
+
+// Without a camera the view frames what the CSG leaves; where the boxes show
+// nothing is left, every solid.
+TEST(DefaultView, FramesWhatTheCsgLeaves) {
+  PrepareOptions o;
+  o.width = 32;
+  o.height = 24;
+  const Scene cut = make_scene({box({0, 0, 0}, {4, 4, 4}), box({20, 0, 0}, {1, 1, 1})},
+                               op(CsgOp::Difference, {leaf(0), leaf(1)}));
+  const PreparedScene ps = prepare_scene(cut, o);
+  const Camera expected = default_camera(box_of({0, 0, 0}, {4, 4, 4}), 32, 24);
+  EXPECT_EQ(ps.camera.eye, expected.eye);
+  EXPECT_EQ(ps.camera.center, expected.center);
+  EXPECT_EQ(ps.lights.at(0).position, expected.eye);
+  const Scene none = make_scene({box({0, 0, 0}, {4, 4, 4}), box({20, 0, 0}, {1, 1, 1})},
+                                op(CsgOp::Intersection, {leaf(0), leaf(1)}));
+  EXPECT_EQ(prepare_scene(none, o).camera.center, default_camera(box_of({0, 0, 0}, {21, 4, 4}), 32, 24).center);
 }
 
 // Orthographic: parallel rays along the view, from the eye plane, over a view
