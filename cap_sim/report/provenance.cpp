@@ -34,7 +34,7 @@ std::string shell_word(const std::string& word) {
 }
 
 std::string value_text(const nlohmann::json& v) {
-  if (v.is_null()) return "none";
+  if (v.is_null() || (v.is_array() && v.empty())) return "none";
   if (v.is_string()) return v.get<std::string>();
   if (v.is_array()) {
     std::vector<std::string> items;
