@@ -82,6 +82,7 @@ Command add_calibrate_command(CLI::App& app) {
     outputs.commit();
     console.summary(fmt::format("round {} of {} fits best: rms ln(ours / paper) {:.4f}\n", c.best,
                                 c.rounds.size() - 1, c.rounds[c.best].simulated_rms));
+    for (const OutputOption& f : files) console.summary(fmt::format("{}: written\n", f.path));
     const std::vector<sim::FitParameter> params = sim::fit_parameters();
     for (std::size_t k = 0; k < params.size(); ++k)
       console.detail(fmt::format("  {:<28} {:10.4g} us (M380)\n", sim::profile_key(params[k].term), c.x()[k]));

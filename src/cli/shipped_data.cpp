@@ -9,10 +9,11 @@
 #include <system_error>
 
 // The build (CAPSIM_BUILD_DIR, where CMake puts the program) and source
-// (CAPSIM_SOURCE_DIR) directories come from CMakeLists.txt, for this file
-// alone.
-#if !defined(CAPSIM_BUILD_DIR) || !defined(CAPSIM_SOURCE_DIR)
-#error "CMakeLists.txt defines CAPSIM_BUILD_DIR and CAPSIM_SOURCE_DIR for this file"
+// (CAPSIM_SOURCE_DIR) directories, and the installed data's directory from the
+// installed program's (CAPSIM_SHARE_FROM_BIN, "../share/capsim" by default)
+// come from CMakeLists.txt, for this file alone.
+#if !defined(CAPSIM_BUILD_DIR) || !defined(CAPSIM_SOURCE_DIR) || !defined(CAPSIM_SHARE_FROM_BIN)
+#error "CMakeLists.txt defines CAPSIM_BUILD_DIR, CAPSIM_SOURCE_DIR and CAPSIM_SHARE_FROM_BIN for this file"
 #endif
 
 namespace capsim::cli {
@@ -52,7 +53,7 @@ std::vector<fs::path> shipped_data_candidates(ShippedData what) {
   std::vector<fs::path> dirs;
   const fs::path dir = program_dir();
   if (dir.empty()) return dirs;
-  dirs.push_back((dir / ".." / "share" / "capsim" / (scenes ? "scenes" : "baselines")).lexically_normal());
+  dirs.push_back((dir / CAPSIM_SHARE_FROM_BIN / (scenes ? "scenes" : "baselines")).lexically_normal());
   if (is_build_dir(dir)) dirs.push_back(fs::path(CAPSIM_SOURCE_DIR) / (scenes ? "scenes" : "bench/baselines"));
   return dirs;
 }

@@ -5,7 +5,9 @@
 //
 //   1. DIR/../share/capsim/scenes and .../baselines, DIR being the directory
 //      of the running program (read from /proc/self/exe): an installed capsim
-//      (`cmake --install build --prefix P` puts them under P/share/capsim);
+//      (`cmake --install build --prefix P` puts them under P/share/capsim;
+//      "../share/capsim" is the data directory seen from the program's, as
+//      CMAKE_INSTALL_BINDIR and CMAKE_INSTALL_DATADIR place them);
 //   2. the source tree's scenes/ and bench/baselines/, when the running
 //      program is the one in the build directory it was built in (CMake
 //      gives this file both directories).
