@@ -20,5 +20,6 @@ Command add_lattice_command(CLI::App& app);
 Command add_repro_command(CLI::App& app);
 Command add_calibrate_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
+Command add_sweep_command(CLI::App& app);
 
 }  // namespace capsim::cli

@@ -52,6 +52,7 @@ int main(int argc, char** argv) {
   const capsim::cli::Command repro = capsim::cli::add_repro_command(app);
   const capsim::cli::Command bench = capsim::cli::add_bench_command(app);
   const capsim::cli::Command calibrate = capsim::cli::add_calibrate_command(app);
+  const capsim::cli::Command sweep = capsim::cli::add_sweep_command(app);
 
   using capsim::cli::UsageError;
   try {
@@ -67,8 +68,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("repro")) return repro();
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("calibrate")) return calibrate();
+    if (app.got_subcommand("sweep")) return sweep();
     throw UsageError(
-        "a command is required (accepted: render, simulate, lattice, repro, bench, calibrate; capsim --help "
+        "a command is required (accepted: render, simulate, lattice, repro, bench, calibrate, sweep; capsim --help "
         "describes them)");
   } catch (const UsageError& e) {
     tell(fmt::format("{}: {}", capsim::cli::command_name(app), e.what()));

@@ -56,16 +56,16 @@ std::string case_name(const ::testing::TestParamInfo<UsageCase>& info) {
 INSTANTIATE_TEST_SUITE_P(
     Commands, CliUsageError,
     ::testing::Values(
-        UsageCase{"", "capsim: a command is required (accepted: render, simulate, lattice, repro, bench, calibrate; capsim --help describes them)"},
+        UsageCase{"", "capsim: a command is required (accepted: render, simulate, lattice, repro, bench, calibrate, sweep; capsim --help describes them)"},
         UsageCase{"rendr BALLS -o OUT.png",
-                  "capsim: unknown command rendr; did you mean render? (accepted: render, simulate, lattice, repro, bench, calibrate)"},
+                  "capsim: unknown command rendr; did you mean render? (accepted: render, simulate, lattice, repro, bench, calibrate, sweep)"},
         UsageCase{"sim BALLS -o OUT.png",
-                  "capsim: unknown command sim; did you mean simulate? (accepted: render, simulate, lattice, repro, bench, calibrate)"},
-        UsageCase{"draw BALLS", "capsim: unknown command draw (accepted: render, simulate, lattice, repro, bench, calibrate)"},
+                  "capsim: unknown command sim; did you mean simulate? (accepted: render, simulate, lattice, repro, bench, calibrate, sweep)"},
+        UsageCase{"draw BALLS", "capsim: unknown command draw (accepted: render, simulate, lattice, repro, bench, calibrate, sweep)"},
         UsageCase{"--threads 2 render BALLS -o OUT.png",
                   "capsim render: --threads is an option of render: give it after the command's name"},
         UsageCase{"--fast", "capsim: unknown option --fast (capsim itself takes only --help and --version; give "
-                            "options after the command: render, simulate, lattice, repro, bench, calibrate)"}),
+                            "options after the command: render, simulate, lattice, repro, bench, calibrate, sweep)"}),
     case_name);
 
 INSTANTIATE_TEST_SUITE_P(

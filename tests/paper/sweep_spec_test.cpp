@@ -1,0 +1,118 @@
+// The sweep file: its axes checked value by value, each error naming the file
+// and the JSON path of the value; the cross product in its fixed order; and
+// frame_average outside dot mode left out.
+
+#include "paper/sweep_spec.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using capsim::sim::parse_sweep_spec;
+using capsim::sim::SweepSpec;
+using capsim::sim::SweepSpecError;
+
+namespace {
+
+const std::string kScenesDir = std::string(CAPSIM_SOURCE_DIR) + "/scenes";
+// A sweep file in the scenes directory, so that scene paths are relative to it.
+const std::string kFile = kScenesDir + "/sweep.json";
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_sweep_spec(text, kFile);
+  } catch (const SweepSpecError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(SweepSpec, CrossProductVariesTheCellsFastestAndResolvesPaths) {
+  const SweepSpec s = parse_sweep_spec(
+      R"({"axes": {"cells": ["4x4", "8x8"], "scenes": ["balls.csg", "chess.csg"], "modes": ["line", "dot"]}})",
+      kFile);
+  ASSERT_EQ(s.points.size(), 8u);
+  EXPECT_EQ(s.skipped, 0);
+  EXPECT_EQ(s.points[0].scene.files, std::vector<std::string>{kScenesDir + "/balls.csg"});
+  EXPECT_EQ(capsim::sim::to_string(s.points[0].cells), "4x4");
+  EXPECT_EQ(capsim::sim::to_string(s.points[1].cells), "8x8");
+  EXPECT_EQ(s.points[1].mode, capsim::sim::PixelMode::Line);
+  EXPECT_EQ(s.points[2].mode, capsim::sim::PixelMode::Dot);
+  EXPECT_EQ(s.points[4].scene.written, "chess.csg");
+}
+
+TEST(SweepSpec, MissingAxesTakeSimulatesDefaults) {
+  const SweepSpec s = parse_sweep_spec(R"({"axes": {"scenes": ["balls.csg"]}})", kFile);
+  ASSERT_EQ(s.points.size(), 1u);
+  const capsim::sim::SweepPoint& p = s.points[0];
+  EXPECT_EQ(capsim::sim::to_string(p.cells), "8x8");
+  EXPECT_EQ(p.mode, capsim::sim::PixelMode::Dot);
+  EXPECT_EQ(p.aa_depth, 0);
+  EXPECT_EQ(p.profile, "cap");
+  EXPECT_EQ(p.width, 0);
+  EXPECT_EQ(p.grid, 0);
+  EXPECT_FALSE(p.primary_only);
+  EXPECT_FALSE(p.frame_average);
+  EXPECT_EQ(capsim::sim::sweep_inputs(p).dump(),
+            R"({"aa":0,"cells":"8x8","frame_average":false,"grid":"auto","mode":"dot","primary_only":false,)"
+            R"("profile":"cap","scene":"balls.csg","size":"camera"})");
+}
+
+TEST(SweepSpec, SequencesAndAnimatedScenes) {
+  const SweepSpec s = parse_sweep_spec(
+      R"({"axes": {"scenes": [["disb/f00000.csg", "disb/f00001.csg"], {"scene": "balls.csg", "frames": 3}]}})",
+      kFile);
+  ASSERT_EQ(s.points.size(), 2u);
+  EXPECT_EQ(s.points[0].scene.files.size(), 2u);
+  EXPECT_EQ(s.points[0].scene.frames, 0);
+  EXPECT_EQ(s.points[1].scene.frames, 3);
+}
+
+TEST(SweepSpec, FrameAverageOutsideDotModeIsLeftOut) {
+  const SweepSpec s = parse_sweep_spec(
+      R"({"axes": {"scenes": ["balls.csg"], "modes": ["block", "dot"], "frame_average": [false, true]}})", kFile);
+  ASSERT_EQ(s.points.size(), 3u);
+  EXPECT_EQ(s.skipped, 1);
+  for (const auto& p : s.points) EXPECT_TRUE(!p.frame_average || p.mode == capsim::sim::PixelMode::Dot);
+}
+
+TEST(SweepSpec, ErrorsNameTheFileAndTheValuesPath) {
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "cells": ["4x4", "8x8", "9x99"]}})"),
+            kFile + R"(: axes.cells[2]: "9x99" is out of range (accepted: 1x1 to 32x32))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "cells": ["big"]}})"),
+            kFile + R"(: axes.cells[0]: "big" is not of the form AxB (accepted: 1x1 to 32x32))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "modes": ["dots"]}})"),
+            kFile + R"(: axes.modes[0]: "dots" is not a pixel mode (accepted: block, line or dot))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "aa": [2, 9]}})"),
+            kFile + R"(: axes.aa[1]: 9 is out of range (accepted: 0 to 8))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "grid": ["auto", 1.5]}})"),
+            kFile + R"(: axes.grid[1]: 1.5 is not a whole number (accepted: 1 to 256))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg", ["chess.csg", "nope.csg"]]}})"),
+            kFile + R"(: axes.scenes[1][1]: "nope.csg" is not a readable file)");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": [{"scene": "balls.csg", "frames": 0}]}})"),
+            kFile + R"(: axes.scenes[0].frames: 0 is out of range (accepted: 1 to 99999))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "profiles": ["cap", "fast"]}})"),
+            kFile + R"(: axes.profiles[1]: "fast" is neither a built-in profile nor a readable file (accepted: )"
+                    R"(cap, m380 or a profile file))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "primary_only": ["yes"]}})"),
+            kFile + R"(: axes.primary_only[0]: "yes" is not true or false)");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "colours": [1]}})"),
+            kFile + ": axes.colours: is not an axis (accepted: scenes, cells, modes, aa, profiles, sizes, grid, "
+                    "primary_only, frame_average)");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": []}})"), kFile + ": axes.scenes: an axis is a list of one value or more");
+  EXPECT_EQ(error_of(R"({"axes": {"cells": ["4x4"]}})"), kFile + ": axes.scenes: is required: the scenes to run");
+  EXPECT_EQ(error_of(R"({"axes": {}, "extra": 1})"), kFile + ": extra: is not a key of a sweep file (accepted: axes)");
+  EXPECT_EQ(error_of("{").rfind(kFile + ": not JSON: ", 0), 0u);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(SweepSpec, TheShippedExampleParses) {
+  const SweepSpec s = capsim::sim::read_sweep_spec(std::string(CAPSIM_SOURCE_DIR) + "/bench/sweeps/small.json");
+  EXPECT_EQ(s.points.size(), 36u);  // 2 scenes x 2 depths x 3 modes x 3 grids
+  EXPECT_EQ(s.points[0].width, 64);
+}
+
+}  // namespace
