@@ -1,6 +1,7 @@
 // `capsim sweep`: a design-space sweep on this host (docs/sweeps.md): every
 // point of a sweep file's axes simulated, the points in parallel, into one
-// CSV and one JSON file, resumable from that JSON.
+// CSV and one JSON file and a page of plots (PREFIX.html), resumable from
+// that JSON.
 
 #include "cli/cli_commands.h"
 #include "cli/cli_options.h"
@@ -8,6 +9,7 @@
 #include "cli/cli_usage.h"
 #include "cli/console.h"
 #include "cli/sweep_run.h"
+#include "paper/sweep_page.h"
 #include "paper/sweep_records.h"
 #include "report/text_output.h"
 
@@ -71,7 +73,7 @@ int run_sweep(const SweepOptions& o) {
     return 1;
   }
   const std::string prefix = !o.prefix.empty() ? o.prefix : std::filesystem::path(file).stem().string() + "-results";
-  const std::string csv = prefix + ".csv", json = prefix + ".json";
+  const std::string csv = prefix + ".csv", json = prefix + ".json", html = prefix + ".html";
   // The earlier JSON is read here and replaced only once every point is done.
   const nlohmann::json earlier = o.resume ? earlier_run(json) : nlohmann::json();
   std::vector<std::string> inputs = {file};
@@ -79,8 +81,8 @@ int run_sweep(const SweepOptions& o) {
     inputs.insert(inputs.end(), p.scene.files.begin(), p.scene.files.end());
     if (std::filesystem::is_regular_file(p.profile_path)) inputs.push_back(p.profile_path);
   }
-  // Both files are -o's; its two names tell them apart in messages.
-  StagedOutputs outputs({{"--output", csv}, {"-o", json}}, inputs);
+  // The three files are -o's; its names tell them apart in messages.
+  StagedOutputs outputs({{"--output", csv}, {"-o", json}, {"-o/--output", html}}, inputs);
   Console console(o.quiet);
   if (outputs.stdout_taken()) console.divert_to_stderr();
 
@@ -124,8 +126,9 @@ int run_sweep(const SweepOptions& o) {
   const std::string sweep_name = std::filesystem::path(file).filename().string();
   sim::write_text_file(outputs["--output"], sim::sweep_csv(records));
   sim::write_text_file(outputs["-o"], sim::sweep_json(records, sweep_name, CAPSIM_VERSION));
+  sim::write_text_file(outputs["-o/--output"], sim::sweep_page(records, sweep_name, CAPSIM_VERSION));
   outputs.commit();
-  console.summary(fmt::format("{}, {}: {} points ({} run, {} kept from the earlier run){}\n", csv, json, n,
+  console.summary(fmt::format("{}, {}, {}: {} points ({} run, {} kept from the earlier run){}\n", csv, json, html, n,
                               to_run.size(), n - to_run.size(),
                               spec.skipped ? fmt::format("; {} left out: frame_average outside dot mode", spec.skipped)
                                            : std::string()));
@@ -139,11 +142,12 @@ Command add_sweep_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "sweep",
       "Simulate every point of a design-space sweep (a JSON file of axes: scenes, cells, modes, aa, profiles, "
-      "sizes, grid, primary_only, frame_average) into PREFIX.csv and PREFIX.json (docs/sweeps.md)");
+      "sizes, grid, primary_only, frame_average) into PREFIX.csv, PREFIX.json and a page of plots, PREFIX.html "
+      "(docs/sweeps.md)");
   accepts(cmd->add_option("SPEC", o->spec.text, "The sweep file (.json)")->required(),
           CLI::Validator("a sweep file"));
   accepts(cmd->add_option("-o,--output", o->prefix,
-                          "Prefix of the outputs PREFIX.csv and PREFIX.json (default: the sweep file's name without "
+                          "Prefix of the outputs PREFIX.csv, PREFIX.json and PREFIX.html (default: the sweep file's name without "
                           ".json and with -results, in the current directory)"),
           CLI::Validator("a path prefix"));
   add_option(*cmd, "--threads", o->threads,
