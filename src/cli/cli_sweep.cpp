@@ -137,8 +137,8 @@ void run_points(const sim::SweepSpec& spec, const std::vector<std::size_t>& mine
   });
 }
 
-// A failure as main tells a command's, a sweep file's error as FILE: PATH:
-// message (as a scene's); `who` names the rank under MPI.
+// A failure as main tells a command's; a sweep file's error as FILE: PATH:
+// message, as a scene's.
 CommandFailure sweep_failure(const std::exception_ptr& e) {
   try {
     std::rethrow_exception(e);
@@ -149,6 +149,8 @@ CommandFailure sweep_failure(const std::exception_ptr& e) {
   }
 }
 
+// Prints a failure on stderr, after `who` (the failing rank under MPI, else
+// nothing); returns its status.
 int tell(const CommandFailure& f, const std::string& who) {
   std::fputs((who + f.message + "\n").c_str(), stderr);
   return f.status;
