@@ -44,14 +44,14 @@ std::string sweep_file(const TempDir& dir, const std::string& scene2, const std:
 }
 
 // capsim under `mpirun -np 3`. Open MPI's session files go to the test's
-// directory (TMPDIR). A sanitized build's leak check leaves out what Open
-// MPI's libraries keep until the process ends.
+// directory (TMPDIR). A sanitized build checks no leaks there: Open MPI's
+// plugins, unloaded at MPI_Finalize, leave allocations LeakSanitizer reports
+// and cannot name a library for; the local sweeps' tests check the same code
+// for leaks.
 RunResult mpirun_capsim(const std::string& args, const TempDir& dir) {
   std::string setup = "export TMPDIR='" + dir.path().string() + "';";
 #ifdef CAPSIM_SANITIZED
-  write(dir / "lsan.supp", "leak:libmpi.so\nleak:libopen-pal.so\nleak:libopen-rte.so\nleak:libpmix.so\n"
-                           "leak:libhwloc.so\nleak:libevent\n");
-  setup += "export LSAN_OPTIONS=suppressions='" + (dir / "lsan.supp") + "';";
+  setup += "export ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\";";
 #endif
   return run_capsim(args, dir, setup, kMpirun + " --allow-run-as-root --oversubscribe -np 3");
 }
