@@ -43,7 +43,7 @@ std::string sweep_file(const TempDir& dir, const std::string& scene2, const std:
   return file;
 }
 
-// capsim under `mpirun -np 3`. Open MPI's session files go to the test's
+// capsim under `mpirun -np 3`. Open MPI's temporary files go to the test's
 // directory (TMPDIR). A sanitized build checks no leaks there: Open MPI's
 // plugins, unloaded at MPI_Finalize, leave allocations LeakSanitizer reports
 // and cannot name a library for; the local sweeps' tests check the same code
