@@ -32,15 +32,6 @@ std::string joined(const std::vector<std::string>& items) {
   return s;
 }
 
-// An SVG document as an element of the page: inside HTML the SVG namespace is
-// implied, and leaving it out keeps the page free of any address.
-std::string inline_svg(std::string svg) {
-  const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
-  const std::size_t at = svg.find(xmlns);
-  if (at != std::string::npos) svg.erase(at, xmlns.size());
-  return svg;
-}
-
 std::string moved_table(const std::vector<MovedFigure>& moved) {
   std::string rows;
   for (const MovedFigure& m : moved)

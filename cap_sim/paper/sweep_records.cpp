@@ -43,6 +43,8 @@ std::string csv_value(const json& v) { return csv_field(v.is_string() ? v.get<st
 
 }  // namespace
 
+const std::vector<std::string>& sweep_input_keys() { return kInputKeys; }
+
 json sweep_record(const SweepPoint& p, const SimulationResult& r, const std::string& version) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   const LoadSpread s = load_spread(r);

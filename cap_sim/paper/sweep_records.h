@@ -15,6 +15,9 @@
 
 namespace capsim::sim {
 
+// The inputs' keys of a record, in the order of the CSV's columns.
+const std::vector<std::string>& sweep_input_keys();
+
 // A point's record: sweep_inputs, the run's figures (as `capsim simulate
 // --report` gives them) and the version of capsim that ran it; no speed-up.
 nlohmann::json sweep_record(const SweepPoint& p, const SimulationResult& r, const std::string& version);

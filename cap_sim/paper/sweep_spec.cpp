@@ -189,13 +189,15 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& file) {
   return spec;
 }
 
-SweepSpec read_sweep_spec(const std::string& file) {
+std::string read_sweep_text(const std::string& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw SweepSpecError(fmt::format("{}: cannot read the sweep file", file));
   std::ostringstream s;
   s << in.rdbuf();
-  return parse_sweep_spec(s.str(), file);
+  return s.str();
 }
+
+SweepSpec read_sweep_spec(const std::string& file) { return parse_sweep_spec(read_sweep_text(file), file); }
 
 json sweep_inputs(const SweepPoint& p) {
   return {{"scene", p.scene.written},

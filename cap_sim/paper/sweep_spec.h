@@ -55,6 +55,8 @@ struct SweepSpec {
 SweepSpec parse_sweep_spec(const std::string& text, const std::string& file);
 // The same, reading the file.
 SweepSpec read_sweep_spec(const std::string& file);
+// The file's text; throws SweepSpecError when it cannot be read.
+std::string read_sweep_text(const std::string& file);
 
 // A point's inputs as its record gives them.
 nlohmann::json sweep_inputs(const SweepPoint& p);

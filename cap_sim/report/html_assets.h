@@ -3,7 +3,8 @@
 // cap_sim/report/embed_html_assets.cmake: the page template (report.html), the
 // run report's styles (report.css) and script (report.js), and what the
 // mode-comparison page of `capsim bench modes` adds to those styles
-// (modes.css) and runs instead of that script (modes.js).
+// (modes.css) and runs instead of that script (modes.js); a sweep's page of
+// plots (paper/sweep_page.h) takes the same two.
 
 #include <string_view>
 

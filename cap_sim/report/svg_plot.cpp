@@ -95,6 +95,22 @@ std::string plot_panel_svg(const PlotAxes& a, const std::vector<PlotSeries>& ser
   return s;
 }
 
+LogRange log_range(double lo, double hi, double base) {
+  LogRange r;
+  r.lo = std::pow(base, std::floor(std::log(lo) / std::log(base) + 1e-9));
+  r.hi = std::pow(base, std::ceil(std::log(hi) / std::log(base) - 1e-9));
+  if (r.hi <= r.lo) r.hi = r.lo * base;
+  for (double t = r.lo; t <= r.hi * 1.0001; t *= base) r.ticks.push_back(t);
+  return r;
+}
+
+std::string inline_svg(std::string svg) {
+  const std::string xmlns = " xmlns=\"http://www.w3.org/2000/svg\"";
+  const std::size_t at = svg.find(xmlns);
+  if (at != std::string::npos) svg.erase(at, xmlns.size());
+  return svg;
+}
+
 std::string svg_document(double width, double height, const std::string& body) {
   return fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0:.0f}\" height=\"{1:.0f}\" viewBox=\"0 0 {0:.0f} "

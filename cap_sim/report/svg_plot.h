@@ -36,6 +36,15 @@ struct PlotAxes {
   std::vector<double> x_ticks, y_ticks;
 };
 
+// A logarithmic axis's range: the whole powers of `base` (10: decades, 2:
+// octaves) around [lo, hi], at least one apart, each a tick.
+// Precondition: 0 < lo <= hi.
+struct LogRange {
+  double lo = 1, hi = 10;
+  std::vector<double> ticks;
+};
+LogRange log_range(double lo, double hi, double base);
+
 // One plot panel, drawn in the rectangle at (left, top) of the given size
 // (legend included, on its right).
 std::string plot_panel_svg(const PlotAxes& axes, const std::vector<PlotSeries>& series, double left, double top,
@@ -43,6 +52,10 @@ std::string plot_panel_svg(const PlotAxes& axes, const std::vector<PlotSeries>& 
 
 // A whole SVG document of the given size around panels.
 std::string svg_document(double width, double height, const std::string& body);
+
+// An SVG document as an element of an HTML page: inside HTML the SVG
+// namespace is implied, and leaving it out keeps the page free of any address.
+std::string inline_svg(std::string svg);
 
 // Ten distinct colours for series.
 const std::string& series_colour(int i);

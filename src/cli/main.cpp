@@ -1,8 +1,8 @@
 // capsim: the Cellular Array Processor ray-tracing simulator.
 
-#include "capsim/scene.h"
 #include "capsim/temp_file_registry.h"
 #include "cli/cli_commands.h"
+#include "cli/command_failure.h"
 #include "cli/cli_usage.h"
 
 #include <fmt/core.h>
@@ -11,7 +11,6 @@
 #include <csignal>
 #include <cstdio>
 #include <exception>
-#include <new>
 #include <string>
 
 namespace {
@@ -72,17 +71,10 @@ int main(int argc, char** argv) {
     throw UsageError(
         "a command is required (accepted: render, simulate, lattice, repro, bench, calibrate, sweep; capsim --help "
         "describes them)");
-  } catch (const UsageError& e) {
-    tell(fmt::format("{}: {}", capsim::cli::command_name(app), e.what()));
-    return 2;
-  } catch (const capsim::SceneError& e) {
-    tell(e.what());  // FILE:LINE:COL: message, as compilers print
-    return 1;
-  } catch (const std::bad_alloc&) {
-    tell(fmt::format("{}: out of memory", capsim::cli::command_name(app)));
-    return 1;
-  } catch (const std::exception& e) {
-    tell(fmt::format("capsim: {}", e.what()));
-    return 1;
+  } catch (const std::exception&) {
+    const capsim::cli::CommandFailure f =
+        capsim::cli::describe_failure(std::current_exception(), capsim::cli::command_name(app));
+    tell(f.message);
+    return f.status;
   }
 }

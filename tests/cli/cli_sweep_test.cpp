@@ -1,10 +1,11 @@
 // `capsim sweep`: every point run as `capsim simulate` runs it (the figures
-// equal its --report's), the outputs byte-identical for any --threads, a
+// equal its --report's), the outputs (CSV, JSON and the HTML page) byte-identical for any --threads, a
 // resumed sweep the same bytes as a fresh one with only the missing points
 // run, and a bad sweep file named with the JSON path of its bad value.
 
 #include "support/cli_run.h"
 
+#include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -63,6 +64,19 @@ TEST(CliSweep, WritesACsvAndJsonRecordPerPointInOrder) {
                    doc["points"][1]["frame_cycles"].get<double>() / doc["points"][0]["frame_cycles"].get<double>());
 }
 
+TEST(CliSweep, WritesTheHtmlPageOfPlotsFromTheRecords) {
+  TempDir dir;
+  ASSERT_EQ(run_capsim("sweep " + small_sweep(dir) + " -o " + (dir / "out") + " --quiet", dir).status, 0);
+  const std::string page = read_file(dir / "out.html");
+  EXPECT_EQ(page.rfind("<!DOCTYPE html>", 0), 0u) << page.substr(0, 80);
+  EXPECT_NE(page.find("<title>capsim sweep: small.json</title>"), std::string::npos);
+  EXPECT_EQ(count_of(page, "<figure class=\"scene-plot\""), 2);
+  EXPECT_NE(page.find("data-scene=\"chess.csg\" data-series=\"2\""), std::string::npos);
+  const json points = json::parse(read_file(dir / "out.json"))["points"];
+  const std::uint64_t cycles = points[7]["frame_cycles"];
+  EXPECT_NE(page.find(fmt::format("<td data-value=\"{}\" title=", cycles)), std::string::npos);
+}
+
 TEST(CliSweep, FiguresEqualSimulatesReportOfTheSamePoint) {
   TempDir dir;
   ASSERT_EQ(run_capsim("sweep " + small_sweep(dir) + " -o " + (dir / "out") + " --quiet", dir).status, 0);
@@ -97,6 +111,7 @@ TEST(CliSweep, OutputsDoNotDependOnTheThreads) {
   ASSERT_EQ(run_capsim("sweep " + spec + " -o " + (dir / "two") + " --threads 2 --quiet", dir).status, 0);
   EXPECT_EQ(read_file(dir / "one.csv"), read_file(dir / "two.csv"));
   EXPECT_EQ(read_file(dir / "one.json"), read_file(dir / "two.json"));
+  EXPECT_EQ(read_file(dir / "one.html"), read_file(dir / "two.html"));
 }
 
 TEST(CliSweep, ResumeRunsOnlyTheMissingPointsAndWritesTheSameBytes) {
@@ -111,6 +126,7 @@ TEST(CliSweep, ResumeRunsOnlyTheMissingPointsAndWritesTheSameBytes) {
   EXPECT_NE(resumed.out.find("8 points (4 run, 4 kept from the earlier run)"), std::string::npos) << resumed.out;
   EXPECT_EQ(read_file(dir / "part.csv"), read_file(dir / "fresh.csv"));
   EXPECT_EQ(read_file(dir / "part.json"), read_file(dir / "fresh.json"));
+  EXPECT_EQ(read_file(dir / "part.html"), read_file(dir / "fresh.html"));
   // Nothing is left to run.
   const RunResult again = run_capsim("sweep " + small_sweep(dir) + " -o " + (dir / "part") + " --resume", dir);
   ASSERT_EQ(again.status, 0) << again.err;
@@ -126,9 +142,12 @@ TEST(CliSweep, DefaultPrefixIsTheSweepFilesStemWithResultsInTheCurrentDirectory)
   const RunResult r = run_program_in(dir.path(), CAPSIM_EXE, "sweep small.json --quiet", dir);
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.err, "");
-  EXPECT_EQ(r.out, "small-results.csv, small-results.json: 4 points (4 run, 0 kept from the earlier run)\n");
+  EXPECT_EQ(r.out,
+            "small-results.csv, small-results.json, small-results.html: 4 points (4 run, 0 kept from the earlier "
+            "run)\n");
   EXPECT_TRUE(std::filesystem::exists(dir / "small-results.csv"));
   EXPECT_TRUE(std::filesystem::exists(dir / "small-results.json"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "small-results.html"));
 }
 
 TEST(CliSweep, FrameAverageOutsideDotModeIsLeftOutAndSaid) {
@@ -154,6 +173,7 @@ TEST(CliSweep, ABadSweepFileNamesTheValueAndWritesNothing) {
   EXPECT_EQ(r.err, (dir / "bad.json") + ": axes.cells[2]: \"9x99\" is out of range (accepted: 1x1 to 32x32)\n");
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.json.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.html"));
 }
 
 TEST(CliSweep, UsageErrorsExitWithTwo) {
@@ -172,6 +192,8 @@ TEST(CliSweep, AResumeFromAFileThatIsNotASweepFails) {
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("cannot resume from it: not a sweep's JSON"), std::string::npos) << r.err;
   EXPECT_EQ(read_file(dir / "out.json"), "[1, 2]");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "out.html"));
 }
 
 }  // namespace

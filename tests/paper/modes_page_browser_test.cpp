@@ -20,10 +20,7 @@
 namespace capsim::sim {
 namespace {
 
-using capsim::testing::data_attributes;
-using capsim::testing::dump_dom;
-using capsim::testing::find_chromium;
-using capsim::testing::TempDir;
+using namespace capsim::testing;
 
 void write(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -57,19 +54,13 @@ TEST(ModesPageInBrowser, ScriptSortsTheTableOfRunsByTheColumnNamed) {
   EXPECT_EQ(number(table, "rows"), bench.runs.size());
   EXPECT_EQ(table.at("sort-key"), "d");
   EXPECT_EQ(table.at("sort-order"), "descending");
-  std::vector<std::size_t> index(bench.runs.size());
-  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
-  std::stable_sort(index.begin(), index.end(), [&](std::size_t a, std::size_t b) {
-    return bench.runs[a].figures.spread.deviation_percent > bench.runs[b].figures.spread.deviation_percent;
-  });
-  std::string order;
-  for (const std::size_t i : index) order += fmt::format("{}{}", order.empty() ? "" : " ", i);
-  EXPECT_EQ(table.at("order"), order);
+  std::vector<double> d;
+  for (const ModeRun& r : bench.runs) d.push_back(r.figures.spread.deviation_percent);
+  const std::vector<std::size_t> index = descending_order(d);
+  EXPECT_EQ(table.at("order"), order_text(index));
   ASSERT_NE(index[0], 0u) << "the sort must move rows for the test to tell";
   // The rows themselves moved: the first in the DOM is the run with the largest d.
-  const std::size_t body = dom.find("<tbody>", dom.find("id=\"runs-table\""));
-  const std::size_t first = dom.find("<tr ", body);
-  const std::string row = dom.substr(first, dom.find("</tr>", first) - first);
+  const std::string row = first_row(dom, "runs-table");
   EXPECT_NE(row.find(fmt::format("data-index=\"{}\"", index[0])), std::string::npos) << row;
   EXPECT_NE(row.find(fmt::format("{:.2f}</td>", bench.runs[index[0]].figures.spread.deviation_percent)),
             std::string::npos)

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <regex>
@@ -112,6 +113,28 @@ inline std::map<std::string, std::string> data_attributes(const std::string& dom
   for (auto it = std::sregex_iterator(tag.begin(), tag.end(), attribute); it != std::sregex_iterator(); ++it)
     out[(*it)[1]] = (*it)[2];
   return out;
+}
+
+// The order the pages' table script records in data-order after a sort by
+// `values` (a row's each, in the page's order), largest first, ties in the
+// page's order: the rows' positions, "2 0 1".
+inline std::vector<std::size_t> descending_order(const std::vector<double>& values) {
+  std::vector<std::size_t> index(values.size());
+  for (std::size_t i = 0; i < index.size(); ++i) index[i] = i;
+  std::stable_sort(index.begin(), index.end(), [&](std::size_t a, std::size_t b) { return values[a] > values[b]; });
+  return index;
+}
+inline std::string order_text(const std::vector<std::size_t>& order) {
+  std::string text;
+  for (const std::size_t i : order) text += (text.empty() ? "" : " ") + std::to_string(i);
+  return text;
+}
+
+// The first row of the body of the table with this id, as the DOM holds it.
+inline std::string first_row(const std::string& dom, const std::string& table_id) {
+  const std::size_t body = dom.find("<tbody>", dom.find("id=\"" + table_id + "\""));
+  const std::size_t first = dom.find("<tr ", body);
+  return dom.substr(first, dom.find("</tr>", first) - first);
 }
 
 }  // namespace capsim::testing
