@@ -22,6 +22,7 @@
 
 #include "scene/scene_args.h"
 #include "scene/scene_lexer.h"
+#include "scene/scene_meshes.h"
 #include "scene/scene_modules.h"
 #include "scene/scene_syntax.h"
 
@@ -32,10 +33,12 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
-bool is_primitive(std::string_view n) { return n == "sphere" || n == "cube" || n == "cylinder"; }
+bool is_primitive(std::string_view n) {
+  return n == "sphere" || n == "cube" || n == "cylinder" || n == "polyhedron" || n == "import";
+}
 bool is_transform(std::string_view n) {
   return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror";
 }
@@ -49,16 +52,16 @@ bool is_object(std::string_view n) {
 // module would need that capsim does not have.
 std::optional<std::string_view> unsupported_reason(std::string_view n) {
   for (std::string_view m : {"square", "circle", "polygon", "text", "offset", "projection"}) {
-    if (n == m) return "2-D shapes are not supported; capsim traces only the solids sphere, cube and "
-                       "cylinder, exactly";
+    if (n == m) return "2-D shapes are not supported; capsim traces only the solids sphere, cube, cylinder and "
+                       "closed meshes (polyhedron, imported STL and OFF), exactly";
   }
   for (std::string_view m : {"linear_extrude", "rotate_extrude"}) {
     if (n == m) return "extrusions are not supported: they make solids out of 2-D shapes, and capsim "
-                       "traces only the solids sphere, cube and cylinder, exactly";
+                       "traces only the solids sphere, cube, cylinder and closed meshes (polyhedron, "
+                       "imported STL and OFF), exactly";
   }
-  for (std::string_view m : {"polyhedron", "import", "surface"}) {
-    if (n == m) return "meshes are not supported; capsim traces exact spheres, boxes and cones";
-  }
+  if (n == "surface") return "height maps are not supported; capsim traces exact spheres, boxes, cones and closed "
+                             "meshes (polyhedron, import of STL and OFF)";
   for (std::string_view m : {"hull", "minkowski"}) {
     if (n == m) return "only union, difference and intersection combine solids; hull and minkowski "
                        "build new solids out of their children";
@@ -77,7 +80,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
                                             *reason, kSupported));
   }
   std::vector<std::string> known;
-  for (std::string_view n : {"sphere", "cube", "cylinder", "multmatrix", "translate", "rotate",
+  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "multmatrix", "translate", "rotate",
                              "scale", "mirror", "union", "difference", "intersection", "group",
                              "render", "color", "material", "camera", "light", "background"}) {
     known.emplace_back(n);
@@ -115,8 +118,9 @@ struct Context {
 // a level deeper.
 class Interpreter {
  public:
-  Interpreter(std::shared_ptr<const std::string> file, std::size_t max_primitives)
-      : file_(std::move(file)), max_primitives_(max_primitives) {}
+  Interpreter(std::shared_ptr<const std::string> file, const ParseLimits& limits, std::string import_dir)
+      : file_(std::move(file)), max_primitives_(limits.max_primitives), max_file_bytes_(limits.max_file_bytes),
+        import_dir_(std::move(import_dir)) {}
 
   // Every module outside the subset is reported, in file order, with the
   // first other error if one follows them (that one ends the walk).
@@ -372,7 +376,9 @@ class Interpreter {
                                              max_primitives_, max_primitives_));
     }
     const Context& ctx = contexts_[id];
-    Primitive p = scene_file::read_primitive(call);
+    Primitive p = call.name == "polyhedron" ? scene_file::read_polyhedron(call)
+                  : call.name == "import"   ? scene_file::read_import(call, import_dir_, max_file_bytes_)
+                                            : scene_file::read_primitive(call);
     p.to_world = ctx.transform * p.to_world;
     bool finite = true;
     for (int c = 0; c < 4; ++c) {
@@ -429,6 +435,8 @@ class Interpreter {
 
   std::shared_ptr<const std::string> file_;
   std::size_t max_primitives_;
+  std::size_t max_file_bytes_;  // of a file import() reads
+  std::string import_dir_;      // where import() looks first
   // The contexts of the calls being walked, outermost first. Levels refer to
   // them by index, never by reference across a call, as the list grows.
   std::vector<Context> contexts_;
@@ -457,7 +465,7 @@ namespace {
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& file_name, const ParseLimits& limits,
-                  double t) {
+                  double t, const std::string& import_dir) {
   auto file = std::make_shared<const std::string>(file_name);
   if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
@@ -470,7 +478,9 @@ Scene parse_scene(std::string_view text, const std::string& file_name, const Par
   // The calls view the text, not the tokens: the tokens' memory can go back to
   // the heap for the scene about to be built.
   std::vector<scene_file::Token>().swap(tokens);
-  return Interpreter(file, limits.max_primitives).run(calls, has_statements, end);
+  const std::string dir =
+      import_dir.empty() ? std::filesystem::path(file_name).parent_path().string() : import_dir;
+  return Interpreter(file, limits, dir).run(calls, has_statements, end);
 }
 
 std::string read_scene_file(const std::string& path, const ParseLimits& limits) {
@@ -497,8 +507,9 @@ std::string read_scene_file(const std::string& path, const ParseLimits& limits) 
   return text;
 }
 
-Scene parse_scene_file(const std::string& path, const ParseLimits& limits, double t) {
-  return parse_scene(read_scene_file(path, limits), path, limits, t);
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits, double t,
+                       const std::string& import_dir) {
+  return parse_scene(read_scene_file(path, limits), path, limits, t, import_dir);
 }
 
 }  // namespace capsim

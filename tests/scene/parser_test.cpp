@@ -512,12 +512,10 @@ TEST(ParserRefusesConstructs, UnsupportedModules) {
     const char* call;
   };
   const Case cases[] = {
-      {"polyhedron", "polyhedron(points = [[0, 0, 0]], faces = [[0]]);"},
       {"linear_extrude", "linear_extrude(height = 1) square();"},
       {"rotate_extrude", "rotate_extrude() circle(1);"},
       {"hull", "hull() { sphere(); cube(); }"},
       {"minkowski", "minkowski() { sphere(); cube(); }"},
-      {"import", "import(\"part.stl\");"},
       {"text", "text(\"hi\");"},
       {"surface", "surface(file = \"h.dat\");"},
       {"square", "square(2);"},
@@ -552,7 +550,8 @@ TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
   for (auto& s : shapes) {
     EXPECT_TRUE(Refused(s[1], 1, 1,
                         fmt::format("'{}' is not supported: 2-D shapes are not supported; capsim "
-                                    "traces only the solids sphere, cube and cylinder, exactly; "
+                                    "traces only the solids sphere, cube, cylinder and closed meshes "
+                                    "(polyhedron, imported STL and OFF), exactly; "
                                     "supported: sphere, cube, cylinder,",
                                     s[0])))
         << s[0];
@@ -565,7 +564,8 @@ TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
     EXPECT_TRUE(Refused(e[1], 1, 1,
                         fmt::format("'{}' is not supported: extrusions are not supported: they make "
                                     "solids out of 2-D shapes, and capsim traces only the solids "
-                                    "sphere, cube and cylinder, exactly; supported:",
+                                    "sphere, cube, cylinder and closed meshes (polyhedron, imported "
+                                    "STL and OFF), exactly; supported:",
                                     e[0])))
         << e[0];
   }
@@ -980,7 +980,7 @@ TEST(ParserRefusesSyntax, EmptyFileAndNoObjects) {
 
 TEST(ParserRefusesSyntax, ErrorInsideDroppedSubtreeStillRefused) {
   EXPECT_TRUE(Refused("cube();\n%sphere(r = -1);", 2, 13, "must be positive"));
-  EXPECT_TRUE(Refused("cube();\n*polyhedron();", 2, 2, "'polyhedron' is not supported"));
+  EXPECT_TRUE(Refused("cube();\n*polyhedron();", 2, 2, "polyhedron needs its points"));
 }
 
 // ---------------------------------------------------------------- nesting depth
