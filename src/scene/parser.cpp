@@ -21,6 +21,7 @@
 #include <span>
 
 #include "scene/scene_args.h"
+#include "scene/scene_extrusion.h"
 #include "scene/scene_lexer.h"
 #include "scene/scene_meshes.h"
 #include "scene/scene_modules.h"
@@ -33,7 +34,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), linear_extrude of square, circle and polygon, multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
@@ -43,23 +44,25 @@ bool is_transform(std::string_view n) {
   return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror";
 }
 bool is_setting(std::string_view n) { return n == "camera" || n == "light" || n == "background"; }
+bool is_shape_2d(std::string_view n) { return n == "square" || n == "circle" || n == "polygon"; }
 bool is_object(std::string_view n) {
-  return is_primitive(n) || is_transform(n) || n == "union" || n == "difference" ||
+  return is_primitive(n) || n == "linear_extrude" || is_transform(n) || n == "union" || n == "difference" ||
          n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
 }
 
 // OpenSCAD modules outside the subset, with why they are refused: what the
 // module would need that capsim does not have.
 std::optional<std::string_view> unsupported_reason(std::string_view n) {
-  for (std::string_view m : {"square", "circle", "polygon", "text", "offset", "projection"}) {
-    if (n == m) return "2-D shapes are not supported; capsim traces only the solids sphere, cube, cylinder and "
-                       "closed meshes (polyhedron, imported STL and OFF), exactly";
+  if (is_shape_2d(n))
+    return "a 2-D shape is drawn only extruded, under linear_extrude(); capsim renders solids, and a 2-D shape "
+           "alone has none";
+  for (std::string_view m : {"text", "offset", "projection"}) {
+    if (n == m) return "this 2-D construct is not supported; capsim extrudes square, circle and polygon, under "
+                       "2-D transforms, union, difference and intersection";
   }
-  for (std::string_view m : {"linear_extrude", "rotate_extrude"}) {
-    if (n == m) return "extrusions are not supported: they make solids out of 2-D shapes, and capsim "
-                       "traces only the solids sphere, cube, cylinder and closed meshes (polyhedron, "
-                       "imported STL and OFF), exactly";
-  }
+  if (n == "rotate_extrude")
+    return "revolutions are not supported: capsim traces the solids sphere, cube, cylinder, closed meshes "
+           "(polyhedron, imported STL and OFF) and straight extrusions (linear_extrude), exactly";
   if (n == "surface") return "height maps are not supported; capsim traces exact spheres, boxes, cones and closed "
                              "meshes (polyhedron, import of STL and OFF)";
   for (std::string_view m : {"hull", "minkowski"}) {
@@ -80,7 +83,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
                                             *reason, kSupported));
   }
   std::vector<std::string> known;
-  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "multmatrix", "translate", "rotate",
+  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "linear_extrude", "multmatrix", "translate", "rotate",
                              "scale", "mirror", "union", "difference", "intersection", "group",
                              "render", "color", "material", "camera", "light", "background"}) {
     known.emplace_back(n);
@@ -300,6 +303,7 @@ class Interpreter {
       unsupported_module(call, ctx);
       return std::nullopt;
     }
+    if (name == "linear_extrude") return extrusion(call, ctx);
     if (is_transform(name) || name == "color" || name == "material") {
       const ContextId inner = enter(call, ctx);
       CsgNode node = pass_through_children(call, inner);
@@ -369,6 +373,15 @@ class Interpreter {
   }
 
   [[gnu::noinline]] CsgNode primitive(const Call& call, ContextId id) {
+    return place(call.name == "polyhedron" ? scene_file::read_polyhedron(call)
+                 : call.name == "import"   ? scene_file::read_import(call, import_dir_, max_file_bytes_)
+                                           : scene_file::read_primitive(call),
+                 call, id);
+  }
+
+  // A primitive read from `call`, placed by the context's transforms, with its
+  // colour and material: a leaf.
+  [[gnu::noinline]] CsgNode place(Primitive p, const Call& call, ContextId id) {
     if (all_primitives_.size() == max_primitives_) {
       throw SceneError(call.loc, fmt::format("more than {} primitives: capsim reads at most {} "
                                              "(each needs about 1.7 KB of memory until it is "
@@ -376,9 +389,6 @@ class Interpreter {
                                              max_primitives_, max_primitives_));
     }
     const Context& ctx = contexts_[id];
-    Primitive p = call.name == "polyhedron" ? scene_file::read_polyhedron(call)
-                  : call.name == "import"   ? scene_file::read_import(call, import_dir_, max_file_bytes_)
-                                            : scene_file::read_primitive(call);
     p.to_world = ctx.transform * p.to_world;
     bool finite = true;
     for (int c = 0; c < 4; ++c) {
@@ -422,6 +432,135 @@ class Interpreter {
                                              "dimension is {:g}, below 1e-30",
                                              call.name, stretch));
     }
+  }
+
+  // linear_extrude: its 2-D tree as a 3-D one over extruded leaves
+  // (scene_extrusion.h). With more than one leaf, a slab cut gives the caps.
+  [[gnu::noinline]] std::optional<CsgNode> extrusion(const Call& call, ContextId ctx) {
+    scene_file::Extrusion e = scene_file::read_linear_extrude(call);
+    const bool lone = shape_leaves(call) == 1;
+    if (!lone) scene_file::extend_beyond_caps(e);
+    const std::size_t first = all_primitives_.size();
+    std::vector<CsgNode> kids;
+    for (const Call& child : call.children)
+      if (auto node = shape(child, ctx, glm::dmat3(1.0), e)) kids.push_back(std::move(*node));
+    if (kids.empty()) return empty_union(call.loc);
+    CsgNode tree = pass_through(call, std::move(kids));
+    if (lone) return tree;
+    const std::vector<Primitive> leaves(all_primitives_.begin() + static_cast<std::ptrdiff_t>(first),
+                                        all_primitives_.end());
+    glm::dmat4 inverse = glm::inverse(contexts_[ctx].transform);
+    std::vector<Primitive> local;
+    for (Primitive p : leaves) {
+      p.to_world = inverse * p.to_world;
+      local.push_back(std::move(p));
+    }
+    CsgNode cut;
+    cut.op = CsgOp::Intersection;
+    cut.loc = call.loc;
+    cut.children.push_back(place(scene_file::extrusion_slab(local, e, call.loc), call, ctx));
+    cut.children.push_back(std::move(tree));
+    return cut;
+  }
+
+  // The 2-D leaves under an extrusion that are drawn (a polygon with holes
+  // counts each path).
+  static int shape_leaves(const Call& call) {
+    int n = 0;
+    for (const Call& child : call.children) {
+      bool dropped = false;
+      for (const auto& m : child.modifiers) dropped = dropped || m.symbol == '%' || m.symbol == '*';
+      if (dropped) continue;
+      if (child.name == "polygon") {
+        n += 2;  // holes or not: the slab is harmless for one path
+      } else if (is_shape_2d(child.name)) {
+        ++n;
+      } else {
+        n += shape_leaves(child);
+      }
+    }
+    return n;
+  }
+
+  // A call under linear_extrude, `plane` the 2-D transforms above it.
+  std::optional<CsgNode> shape(const Call& call, ContextId ctx, const glm::dmat3& plane,
+                               const scene_file::Extrusion& e) {
+    for (const auto& m : call.modifiers) {
+      if (m.symbol == '!')
+        throw SceneError(m.loc, "the '!' (root) modifier is not supported inside linear_extrude()");
+      if (m.symbol == '%' || m.symbol == '*') {
+        // Read and checked, then left out.
+        shape_node(call, push_dropped(ctx), plane, e);
+        contexts_.pop_back();
+        return std::nullopt;
+      }
+    }
+    return shape_node(call, ctx, plane, e);
+  }
+
+  [[gnu::noinline]] std::optional<CsgNode> shape_node(const Call& call, ContextId ctx, const glm::dmat3& plane,
+                                                      const scene_file::Extrusion& e) {
+    const std::string_view name = call.name;
+    if (name == "circle" || name == "square") {
+      no_children(call);
+      return place(name == "circle" ? scene_file::extrude_circle(call, plane, e)
+                                    : scene_file::extrude_square(call, plane, e),
+                   call, ctx);
+    }
+    if (name == "polygon") {
+      no_children(call);
+      std::vector<CsgNode> paths;
+      for (Primitive& p : scene_file::extrude_polygon(call, plane, e)) paths.push_back(place(std::move(p), call, ctx));
+      if (paths.size() == 1) return std::move(paths.front());
+      CsgNode node;
+      node.op = CsgOp::Difference;
+      node.loc = call.loc;
+      node.children = std::move(paths);
+      return node;
+    }
+    const bool is_group = name == "union" || name == "difference" || name == "intersection" || name == "group" ||
+                          name == "render";
+    if (!is_group && !is_transform(name) && name != "color" && name != "material") {
+      if (name == "import") {
+        throw SceneError(call.loc, "import() under linear_extrude() reads a 2-D file (DXF, SVG), which is not "
+                                   "supported; capsim extrudes square, circle and polygon");
+      }
+      if (is_object(name) || is_setting(name)) {
+        throw SceneError(call.loc, fmt::format("{}() is not a 2-D shape: linear_extrude() extrudes square, circle "
+                                               "and polygon",
+                                               name));
+      }
+      if (name == "projection") {
+        unsupported_module(call, ctx);  // its children are solids
+        return std::nullopt;
+      }
+      // Noted, and its 2-D children read as a dropped subtree, so that every
+      // unsupported module under it is noted too.
+      note(module_error(call));
+      const ContextId dropped = push_dropped(ctx);
+      for (const Call& child : call.children) shape(child, dropped, plane, e);
+      contexts_.pop_back();
+      return std::nullopt;
+    }
+    glm::dmat3 inner = plane;
+    if (is_transform(name)) {
+      inner = plane * scene_file::read_transform_2d(call);
+    } else if (name == "color") {
+      scene_file::read_color(call);  // the extrusion is drawn in the colour around it
+    } else if (name == "material") {
+      scene_file::read_material(call, contexts_[ctx].material);
+    } else {
+      scene_file::read_pass_through(call);
+    }
+    std::vector<CsgNode> kids;
+    for (const Call& child : call.children)
+      if (auto node = shape(child, ctx, inner, e)) kids.push_back(std::move(*node));
+    if (!is_group || name == "group" || name == "render" || name == "union") return pass_through(call, std::move(kids));
+    CsgNode node;
+    node.op = name == "difference" ? CsgOp::Difference : CsgOp::Intersection;
+    node.loc = call.loc;
+    node.children = std::move(kids);
+    return node;
   }
 
   void compact(CsgNode& node) {

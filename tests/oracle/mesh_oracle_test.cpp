@@ -1,5 +1,5 @@
-// Mesh leaves against OpenSCAD's own result: OpenSCAD's examples that use
-// polyhedron() and import() are exported twice, to CSG (which capsim reads)
+// Mesh leaves and extrusions against OpenSCAD's own result: OpenSCAD's
+// examples that use polyhedron(), import() and linear_extrude() are exported twice, to CSG (which capsim reads)
 // and, rendered by OpenSCAD with $fn = 96, to STL; Embree casts capsim's
 // primary rays at the STL's triangles. The depths must agree within 1 % on
 // at least 98 % of the pixels, leaving out those within one pixel of either
@@ -17,6 +17,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 using namespace capsim;
 using namespace capsim::testing;
@@ -88,12 +89,8 @@ Agreement compare(const std::vector<double>& a, const std::vector<double>& b) {
   return r;
 }
 
-class MeshOracle : public ::testing::TestWithParam<const char*> {};
-
-TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
-  const std::filesystem::path scad = kExamples / (std::string(GetParam()) + ".scad");
-  if (!have_openscad() || !std::filesystem::exists(scad)) GTEST_SKIP() << "openscad or its examples not installed";
-  TempDir dir;
+// capsim's depth image of the .scad against Embree's of OpenSCAD's STL.
+void expect_agreement(const std::filesystem::path& scad, const std::string& label, const TempDir& dir) {
   const std::string csg = dir / "model.csg", stl = dir / "model.stl";
   ASSERT_EQ(std::system(fmt::format("openscad -o '{}' '{}' >/dev/null 2>&1", csg, scad.string()).c_str()), 0);
   ASSERT_EQ(std::system(fmt::format("openscad -D '$fn=96' -o '{}' '{}' >/dev/null 2>&1", stl, scad.string()).c_str()),
@@ -114,15 +111,40 @@ TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
       ours[static_cast<std::size_t>(j) * kSide + i] = tracer.first_hit(r, scratch, ops, h) ? h.t : kInfinity;
       theirs[static_cast<std::size_t>(j) * kSide + i] = reference.depth(r);
     }
-  EXPECT_GT(ops.mesh_tests, 0u);
+  EXPECT_GT(ops.mesh_tests, 0u) << label;
   const Agreement a = compare(ours, theirs);
-  ASSERT_GT(a.compared, kSide * kSide / 2);
+  ASSERT_GT(a.compared, kSide * kSide / 2) << label;
   const double share = static_cast<double>(a.agreeing) / a.compared;
-  std::printf("%s: %d of %d pixels agree (%.4f)\n", GetParam(), a.agreeing, a.compared, share);
-  EXPECT_GE(share, 0.98) << GetParam();
+  std::printf("%s: %d of %d pixels agree (%.4f)\n", label.c_str(), a.agreeing, a.compared, share);
+  EXPECT_GE(share, 0.98) << label;
+}
+
+class MeshOracle : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
+  const std::filesystem::path scad = kExamples / (std::string(GetParam()) + ".scad");
+  if (!have_openscad() || !std::filesystem::exists(scad)) GTEST_SKIP() << "openscad or its examples not installed";
+  TempDir dir;
+  expect_agreement(scad, GetParam(), dir);
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, MeshOracle, ::testing::Values("Old/example011", "Old/example012", "Old/example016"),
                          [](const auto& info) { return std::string(info.param).substr(4); });
+
+// Straight extrusions: a frustum of a polygon with a hole, less a circle and
+// a square, beside a scaled circle: each 2-D leaf its own solid, the caps cut once.
+TEST(MeshOracle, ExtrusionsAgreeWithOpenScadsStl) {
+  if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
+  TempDir dir;
+  const std::string scad = dir / "extrusions.scad";
+  std::ofstream(scad) << "linear_extrude(height = 6, scale = 0.6) difference() {\n"
+                         "  polygon([[0, 0], [10, 0], [10, 4], [4, 4], [4, 10], [0, 10], [1, 1], [3, 1], [1, 3]],\n"
+                         "          [[0, 1, 2, 3, 4, 5], [6, 7, 8]]);\n"
+                         "  translate([7, 2]) circle(r = 1);\n"
+                         "  translate([1, 6]) square([2, 2]);\n"
+                         "}\n"
+                         "translate([16, 4, 0]) linear_extrude(height = 5, center = true, scale = 1.5) circle(3);\n";
+  expect_agreement(scad, "extrusions", dir);
+}
 
 }  // namespace
