@@ -1,4 +1,4 @@
-// linear_extrude of square, circle and polygon: the exact solids each 2-D
+// linear_extrude of square, circle and polygon, read and traced: the exact solids each 2-D
 // leaf becomes, the 2-D tree as the 3-D one with the caps cut once, and
 // every refusal at its FILE:LINE:COL.
 
