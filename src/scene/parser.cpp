@@ -509,14 +509,7 @@ class Interpreter {
     }
     if (name == "polygon") {
       no_children(call);
-      std::vector<CsgNode> paths;
-      for (Primitive& p : scene_file::extrude_polygon(call, plane, e)) paths.push_back(place(std::move(p), call, ctx));
-      if (paths.size() == 1) return std::move(paths.front());
-      CsgNode node;
-      node.op = CsgOp::Difference;
-      node.loc = call.loc;
-      node.children = std::move(paths);
-      return node;
+      return polygon_node(call, scene_file::extrude_polygon(call, plane, e), ctx);
     }
     const bool is_group = name == "union" || name == "difference" || name == "intersection" || name == "group" ||
                           name == "render";
@@ -561,6 +554,29 @@ class Interpreter {
     node.loc = call.loc;
     node.children = std::move(kids);
     return node;
+  }
+
+  // The even-odd rule as CSG: the union of the outlines (paths at even
+  // depth), each less the paths directly inside it.
+  [[gnu::noinline]] CsgNode polygon_node(const Call& call, scene_file::ExtrudedPaths paths, ContextId ctx) {
+    const std::size_t n = paths.prisms.size();
+    std::vector<int> depth(n, 0);
+    for (std::size_t k = 0; k < n; ++k)
+      for (int at = paths.parent[k]; at >= 0; at = paths.parent[static_cast<std::size_t>(at)]) ++depth[k];
+    std::vector<std::optional<CsgNode>> leaf(n);
+    for (std::size_t k = 0; k < n; ++k) leaf[k] = place(std::move(paths.prisms[k]), call, ctx);
+    std::vector<CsgNode> outlines;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (depth[k] % 2) continue;
+      CsgNode outline;
+      outline.op = CsgOp::Difference;
+      outline.loc = call.loc;
+      outline.children.push_back(std::move(*leaf[k]));
+      for (std::size_t h = 0; h < n; ++h)
+        if (paths.parent[h] == static_cast<int>(k)) outline.children.push_back(std::move(*leaf[h]));
+      outlines.push_back(outline.children.size() == 1 ? std::move(outline.children.front()) : std::move(outline));
+    }
+    return pass_through(call, std::move(outlines));
   }
 
   void compact(CsgNode& node) {

@@ -250,7 +250,7 @@ Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrus
   return p;
 }
 
-std::vector<Primitive> extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
   Args args(call, {"points", "paths", "convexity"});
   args.number("convexity", 1);
   if (!args.has("points")) throw SceneError(call.loc, "polygon needs its points");
@@ -297,17 +297,24 @@ std::vector<Primitive> extrude_polygon(const Call& call, const glm::dmat3& plane
       throw SceneError(path_locs[k], fmt::format("polygon {} crosses itself or encloses no area: capsim extrudes "
                                                  "simple outlines only",
                                                  paths.size() == 1 ? std::string("outline") : fmt::format("path {}", k)));
-    for (std::size_t j = 1; j < k; ++j)
-      if (paths_cross(paths[j], paths[k], false) || inside(paths[j], paths[k][0]) || inside(paths[k], paths[j][0]))
-        throw SceneError(path_locs[k], fmt::format("polygon paths {} and {} cross or lie one inside the other: capsim "
-                                                   "takes path 0 as the outline and the others as holes in it, "
-                                                   "apart from each other",
+    for (std::size_t j = 0; j < k; ++j)
+      if (paths_cross(paths[j], paths[k], false))
+        throw SceneError(path_locs[k], fmt::format("polygon paths {} and {} cross: capsim extrudes paths that lie "
+                                                   "apart or one inside another",
                                                    j, k));
-    if (k > 0 && (paths_cross(paths[0], paths[k], false) || !inside(paths[0], paths[k][0])))
-      throw SceneError(path_locs[k], fmt::format("polygon path {} is not a hole inside path 0, the outline", k));
   }
-  std::vector<Primitive> out;
-  for (const std::vector<glm::dvec2>& q : paths) out.push_back(prism(q, e, call.loc));
+  // Each path's parent: the smallest path that holds it (paths do not cross,
+  // so one corner tells).
+  ExtrudedPaths out;
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    int parent = -1;
+    for (std::size_t j = 0; j < paths.size(); ++j)
+      if (j != k && inside(paths[j], paths[k][0]) &&
+          (parent < 0 || std::abs(area2(paths[j])) < std::abs(area2(paths[static_cast<std::size_t>(parent)]))))
+        parent = static_cast<int>(j);
+    out.parent.push_back(parent);
+    out.prisms.push_back(prism(paths[k], e, call.loc));
+  }
   return out;
 }
 

@@ -49,10 +49,16 @@ glm::dmat3 read_transform_2d(const Call& call);
 Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrusion& e);
 Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrusion& e);
 
-// A polygon's extruded paths: the first the outline, the others its holes,
-// each a prism (or frustum) mesh; the solid is the first minus the others.
-// Refuses paths that cross themselves or each other, holes not inside the
-// outline or inside each other, and shapes of no area.
-std::vector<Primitive> extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e);
+// A polygon's extruded paths, each a prism (or frustum) mesh, with the path
+// each lies directly inside (-1 for none). OpenSCAD's even-odd rule over
+// paths that do not cross: a point is in the polygon when an odd number of
+// paths hold it, so a path at even depth is an outline and those directly
+// inside it are its holes. Refuses paths that cross themselves or each other
+// and paths of no area.
+struct ExtrudedPaths {
+  std::vector<Primitive> prisms;
+  std::vector<int> parent;
+};
+ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e);
 
 }  // namespace capsim::scene_file
