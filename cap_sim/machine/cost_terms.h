@@ -38,11 +38,11 @@ const char* json_key(CostCategory c);   // kCostCategoryTable's json_key
 enum class CostPayer { Cell, Host };
 
 enum class CostTerm {
-  SphereTest, ConeTest, BoxTest, DdaSetup, DdaStep, VoxelVisit, Matvec, VoxelPass, TreeVisit, HitSort,
+  SphereTest, ConeTest, BoxTest, MeshTest, MeshNodeTest, TriangleTest, DdaSetup, DdaStep, VoxelVisit, Matvec, VoxelPass, TreeVisit, HitSort,
   ShadingEval, RayOther, AaSquare, PixelWrite,
   HostPrimitive, HostMatmat, HostMatvec, HostColumn, HostEntry, HostGridVoxel,
 };
-inline constexpr int kCostTermCount = 20;
+inline constexpr int kCostTermCount = 23;
 
 // Where the shipped profiles' value of a term comes from.
 enum class CostSource {
@@ -78,6 +78,15 @@ inline constexpr std::array<CostTermInfo, kCostTermCount> kCostTerms = {{
      CostSource::Table41, [](const OpCounts& o, std::uint64_t) { return o.cone_tests; }, nullptr},
     {CostTerm::BoxTest, CostPayer::Cell, "box_test", CostCategory::Intersection, "box tests", "test",
      CostSource::Table41, [](const OpCounts& o, std::uint64_t) { return o.box_tests; }, nullptr},
+    // A mesh leaf (docs/calibration.md gives the reasoning): the ray carried
+    // into its space once, then the boxes of its hierarchy and the triangles
+    // in the boxes the ray meets.
+    {CostTerm::MeshTest, CostPayer::Cell, "mesh_test", CostCategory::Intersection, "mesh tests", "test",
+     CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.mesh_tests; }, nullptr},
+    {CostTerm::MeshNodeTest, CostPayer::Cell, "mesh_node_test", CostCategory::Intersection, "mesh box tests",
+     "test", CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.mesh_node_tests; }, nullptr},
+    {CostTerm::TriangleTest, CostPayer::Cell, "triangle_test", CostCategory::Intersection, "triangle tests",
+     "test", CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.triangle_tests; }, nullptr},
     {CostTerm::DdaSetup, CostPayer::Cell, "dda_setup", CostCategory::Dda, "3DDDA set-ups", "set-up",
      CostSource::Table41, [](const OpCounts& o, std::uint64_t) { return o.dda_setups; }, nullptr},
     {CostTerm::DdaStep, CostPayer::Cell, "dda_step", CostCategory::Dda, "3DDDA steps", "step", CostSource::Table41,

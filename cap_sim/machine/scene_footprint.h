@@ -4,6 +4,9 @@
 // number is a 4-byte word (single-precision float or 32-bit integer):
 //   primitive:        kind 4 + object matrix 16 x 4 + cone radii 2 x 4
 //                     + colour and alpha 4 x 4 + material 7 x 4          = 120 bytes
+//   mesh, per primitive that is one: vertex 3 x 4 each; triangle 3 x 4
+//                     indices + 3 x 4 normal + 4 in the hierarchy's order
+//                     = 28 each; hierarchy node 6 x 4 box + 2 x 4 = 32 each
 //   status-tree node: operator 1 + flags 1 (left child?, self, left, right)
 //                     + padding 2 + parent index 4                       =   8 bytes
 //   status-tree leaf: parent index 4 + flags 4 (per primitive)           =   8 bytes
@@ -20,6 +23,9 @@
 namespace capsim::sim {
 
 inline constexpr std::uint64_t kPrimitiveRecordBytes = 120;
+inline constexpr std::uint64_t kMeshVertexBytes = 12;
+inline constexpr std::uint64_t kMeshTriangleBytes = 28;
+inline constexpr std::uint64_t kMeshNodeBytes = 32;
 inline constexpr std::uint64_t kStatusNodeBytes = 8;
 inline constexpr std::uint64_t kStatusLeafBytes = 8;
 inline constexpr std::uint64_t kGridHeaderBytes = 28;
@@ -29,7 +35,7 @@ inline constexpr std::uint64_t kLightBytes = 24;
 inline constexpr std::uint64_t kBackgroundBytes = 12;
 
 struct SceneFootprint {
-  std::uint64_t primitives = 0;   // primitive records
+  std::uint64_t primitives = 0;   // primitive records, and the meshes' data
   std::uint64_t status_tree = 0;  // operator nodes and leaves
   std::uint64_t view = 0;         // camera, lights, background
   std::uint64_t voxel_grid = 0;   // header, offsets, items

@@ -33,9 +33,13 @@ struct ParseLimits {
 // primitive past the limit where it stands.
 // `t` is the value of OpenSCAD's $t in the scene's expressions (the
 // animation time, 0 <= t < 1 in an animation; docs/animation.md).
+// import() reads a relative path in `import_dir`, by default the directory
+// of file_name (OpenSCAD's rule: beside the file that names it), then in the
+// current directory; each imported file is held to limits.max_file_bytes.
 Scene parse_scene(std::string_view text, const std::string& file_name,
-                  const ParseLimits& limits = {}, double t = 0);
-Scene parse_scene_file(const std::string& path, const ParseLimits& limits = {}, double t = 0);
+                  const ParseLimits& limits = {}, double t = 0, const std::string& import_dir = {});
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits = {}, double t = 0,
+                       const std::string& import_dir = {});
 
 // The text of a scene file, for parse_scene; throws SceneError ("FILE:
 // message") where parse_scene_file would: a file that cannot be read or is

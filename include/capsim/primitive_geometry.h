@@ -1,8 +1,10 @@
 #pragma once
-// Exact ray-primitive intersection. Every primitive is a convex solid, so a line
-// meets it in one interval [t_enter, t_exit] (possibly empty); the tracer turns the
-// two ends into the boundary crossings that drive the status tree.
+// Exact ray-primitive intersection. The paper's primitives are convex solids, so a
+// line meets one in one interval [t_enter, t_exit] (possibly empty); a mesh is met
+// in any number of intervals, given as its sorted boundary crossings. The tracer
+// turns both into the crossings that drive the status tree.
 
+#include "capsim/mesh_geometry.h"
 #include "capsim/op_counts.h"
 #include "capsim/ray.h"
 #include "capsim/scene.h"
@@ -25,15 +27,18 @@ struct alignas(64) PreparedPrimitive {
   glm::dmat3 normal_to_world{1.0};  // inverse transpose of to_world's linear part
   double cone_r1 = 1, cone_r2 = 1;
   Aabb world_bounds;                // the 8 corners of the object box, transformed
+  std::shared_ptr<const MeshHierarchy> mesh;  // Mesh only
 };
 
 PreparedPrimitive prepare_primitive(const Primitive& p);
 
 // The object-space bounding box of a prepared primitive (scene.h's object_bounds).
-inline Aabb object_bounds(const PreparedPrimitive& p) { return object_bounds(p.kind); }
+inline Aabb object_bounds(const PreparedPrimitive& p) {
+  return p.kind == PrimitiveKind::Mesh ? p.mesh->mesh->bounds : object_bounds(p.kind);
+}
 
 // Which surface of the primitive a crossing lies on (box: face 0..5 as -x,+x,-y,+y,
-// -z,+z; cone: 0 side, 1 cap z=0, 2 cap z=1; sphere: 0).
+// -z,+z; cone: 0 side, 1 cap z=0, 2 cap z=1; sphere: 0; mesh: its triangle).
 using SurfaceId = int;
 
 struct LineSpan {
@@ -43,12 +48,18 @@ struct LineSpan {
   SurfaceId exit_surface = 0;
 };
 
-// Intersects the whole line origin + t dir (ignoring tmin/tmax) with the solid.
-// Returns false when the line misses or only grazes it (an empty or one-point
-// interval). Counts one test of the primitive's kind; its cost, as in the
-// paper's Table 4-1, includes carrying the ray into object space.
+// Intersects the whole line origin + t dir (ignoring tmin/tmax) with a convex
+// solid (not a Mesh). Returns false when the line misses or only grazes it (an
+// empty or one-point interval). Counts one test of the primitive's kind; its
+// cost, as in the paper's Table 4-1, includes carrying the ray into object space.
 bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& span,
                     OpCounts& ops);
+
+// The crossings of the whole line origin + t dir with a Mesh (mesh_line_crossings):
+// sorted, entries and exits alternating from an entry. Counts one mesh test (the
+// ray carried into the mesh's space) and the work mesh_line_crossings counts.
+void mesh_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
+                    std::vector<LineCrossing>& work, OpCounts& ops);
 
 // The primitive's outward unit normal, in world space, at a world point on surface s.
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,

@@ -1,9 +1,10 @@
 #pragma once
 // The scene as parsed: a CSG tree over exact primitives, with camera, lights,
-// materials and background. Geometry is kept exact (quadrics and planes); nothing
-// is tessellated.
+// materials and background. Geometry is kept exact (quadrics and planes, and
+// the planar faces of meshes); nothing is tessellated.
 
 #include "capsim/bounds.h"
+#include "capsim/triangle_mesh.h"
 
 #include <glm/glm.hpp>
 
@@ -37,14 +38,15 @@ class SceneError : public std::runtime_error {
   std::string message_;
 };
 
-// The paper's three primitive kinds. Cone covers OpenSCAD's cylinder: equal radii
-// give a cylinder, r2 = 0 a pointed cone.
-enum class PrimitiveKind { Sphere, Box, Cone };
+// The paper's three primitive kinds, and closed triangle meshes. Cone covers
+// OpenSCAD's cylinder: equal radii give a cylinder, r2 = 0 a pointed cone.
+// Mesh covers polyhedron() and imported STL and OFF solids.
+enum class PrimitiveKind { Sphere, Box, Cone, Mesh };
 const char* to_string(PrimitiveKind kind);
 
-// The object-space bounding box of a canonical primitive (before to_world):
-// the unit sphere, the unit cube [0,1]^3, the frustum 0 <= z <= 1 of radius
-// at most 1.
+// The object-space bounding box of a canonical convex primitive (before
+// to_world): the unit sphere, the unit cube [0,1]^3, the frustum 0 <= z <= 1
+// of radius at most 1. A mesh's is its own (object_bounds of the primitive).
 Aabb object_bounds(PrimitiveKind kind);
 
 struct Material {
@@ -62,16 +64,21 @@ struct Material {
 //   Box:    the unit cube [0,1]^3.
 //   Cone:   the frustum 0 <= z <= 1 with radius r(z) = cone_r1 + (cone_r2 - cone_r1) z,
 //           where max(cone_r1, cone_r2) = 1 and both caps are closed.
+//   Mesh:   the closed triangle mesh `mesh`, in its own coordinates.
 struct Primitive {
   PrimitiveKind kind = PrimitiveKind::Sphere;
   glm::dmat4 to_world{1.0};  // object -> world; invertible (the parser refuses singular ones)
   double cone_r1 = 1;
   double cone_r2 = 1;
+  std::shared_ptr<const TriangleMesh> mesh;  // Mesh only; shared by the frames of an animation
   glm::dvec3 color{0.946, 0.679, 0.025};  // linear RGB albedo: OpenSCAD's default #f9d72c, decoded
   double alpha = 1;
   Material material;
   SourceLoc loc;
 };
+
+// The object-space bounding box of a primitive: object_bounds(kind), or a mesh's own.
+Aabb object_bounds(const Primitive& p);
 
 enum class CsgOp { Union, Intersection, Difference };
 const char* to_string(CsgOp op);

@@ -55,6 +55,7 @@ class Tracer {
     };
     std::vector<Crossing> pending;  // crossings met but not yet evaluated, latest first
     std::vector<Crossing> fresh;    // crossings met in the current voxel, not yet in pending
+    std::vector<LineCrossing> leaf_crossings, leaf_work;  // one mesh's crossings, and its hits
   };
 
   Tracer(const PreparedScene& scene, TraceOptions options);

@@ -151,7 +151,8 @@ namespace {
 // A scene OpenSCAD exported: its errors are the export's, and say so.
 Scene parse_export(const std::string& csg, const std::string& scad) {
   try {
-    return parse_scene_file(csg);
+    // Its import() paths are as the .scad gives them: relative to the .scad's directory.
+    return parse_scene_file(csg, {}, 0, std::filesystem::path(scad).parent_path().string());
   } catch (const SceneError& e) {
     throw SceneError(e.loc(), fmt::format("{}\n{}: the errors above are in OpenSCAD's CSG export of it, removed "
                                           "after the run ('openscad -o model.csg {}' writes it to read)",

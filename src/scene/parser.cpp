@@ -21,7 +21,9 @@
 #include <span>
 
 #include "scene/scene_args.h"
+#include "scene/scene_extrusion.h"
 #include "scene/scene_lexer.h"
+#include "scene/scene_meshes.h"
 #include "scene/scene_modules.h"
 #include "scene/scene_syntax.h"
 
@@ -32,33 +34,37 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), linear_extrude of square, circle and polygon, multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
-bool is_primitive(std::string_view n) { return n == "sphere" || n == "cube" || n == "cylinder"; }
+bool is_primitive(std::string_view n) {
+  return n == "sphere" || n == "cube" || n == "cylinder" || n == "polyhedron" || n == "import";
+}
 bool is_transform(std::string_view n) {
   return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror";
 }
 bool is_setting(std::string_view n) { return n == "camera" || n == "light" || n == "background"; }
+bool is_shape_2d(std::string_view n) { return n == "square" || n == "circle" || n == "polygon"; }
 bool is_object(std::string_view n) {
-  return is_primitive(n) || is_transform(n) || n == "union" || n == "difference" ||
+  return is_primitive(n) || n == "linear_extrude" || is_transform(n) || n == "union" || n == "difference" ||
          n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
 }
 
 // OpenSCAD modules outside the subset, with why they are refused: what the
 // module would need that capsim does not have.
 std::optional<std::string_view> unsupported_reason(std::string_view n) {
-  for (std::string_view m : {"square", "circle", "polygon", "text", "offset", "projection"}) {
-    if (n == m) return "2-D shapes are not supported; capsim traces only the solids sphere, cube and "
-                       "cylinder, exactly";
+  if (is_shape_2d(n))
+    return "a 2-D shape is drawn only extruded, under linear_extrude(); capsim renders solids, and a 2-D shape "
+           "alone has none";
+  for (std::string_view m : {"text", "offset", "projection"}) {
+    if (n == m) return "this 2-D construct is not supported; capsim extrudes square, circle and polygon, under "
+                       "2-D transforms, union, difference and intersection";
   }
-  for (std::string_view m : {"linear_extrude", "rotate_extrude"}) {
-    if (n == m) return "extrusions are not supported: they make solids out of 2-D shapes, and capsim "
-                       "traces only the solids sphere, cube and cylinder, exactly";
-  }
-  for (std::string_view m : {"polyhedron", "import", "surface"}) {
-    if (n == m) return "meshes are not supported; capsim traces exact spheres, boxes and cones";
-  }
+  if (n == "rotate_extrude")
+    return "revolutions are not supported: capsim traces the solids sphere, cube, cylinder, closed meshes "
+           "(polyhedron, imported STL and OFF) and straight extrusions (linear_extrude), exactly";
+  if (n == "surface") return "height maps are not supported; capsim traces exact spheres, boxes, cones and closed "
+                             "meshes (polyhedron, import of STL and OFF)";
   for (std::string_view m : {"hull", "minkowski"}) {
     if (n == m) return "only union, difference and intersection combine solids; hull and minkowski "
                        "build new solids out of their children";
@@ -77,7 +83,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
                                             *reason, kSupported));
   }
   std::vector<std::string> known;
-  for (std::string_view n : {"sphere", "cube", "cylinder", "multmatrix", "translate", "rotate",
+  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "linear_extrude", "multmatrix", "translate", "rotate",
                              "scale", "mirror", "union", "difference", "intersection", "group",
                              "render", "color", "material", "camera", "light", "background"}) {
     known.emplace_back(n);
@@ -115,8 +121,9 @@ struct Context {
 // a level deeper.
 class Interpreter {
  public:
-  Interpreter(std::shared_ptr<const std::string> file, std::size_t max_primitives)
-      : file_(std::move(file)), max_primitives_(max_primitives) {}
+  Interpreter(std::shared_ptr<const std::string> file, const ParseLimits& limits, std::string import_dir)
+      : file_(std::move(file)), max_primitives_(limits.max_primitives), max_file_bytes_(limits.max_file_bytes),
+        import_dir_(std::move(import_dir)) {}
 
   // Every module outside the subset is reported, in file order, with the
   // first other error if one follows them (that one ends the walk).
@@ -296,6 +303,7 @@ class Interpreter {
       unsupported_module(call, ctx);
       return std::nullopt;
     }
+    if (name == "linear_extrude") return extrusion(call, ctx);
     if (is_transform(name) || name == "color" || name == "material") {
       const ContextId inner = enter(call, ctx);
       CsgNode node = pass_through_children(call, inner);
@@ -365,6 +373,15 @@ class Interpreter {
   }
 
   [[gnu::noinline]] CsgNode primitive(const Call& call, ContextId id) {
+    return place(call.name == "polyhedron" ? scene_file::read_polyhedron(call)
+                 : call.name == "import"   ? scene_file::read_import(call, import_dir_, max_file_bytes_)
+                                           : scene_file::read_primitive(call),
+                 call, id);
+  }
+
+  // A primitive read from `call`, placed by the context's transforms, with its
+  // colour and material: a leaf.
+  [[gnu::noinline]] CsgNode place(Primitive p, const Call& call, ContextId id) {
     if (all_primitives_.size() == max_primitives_) {
       throw SceneError(call.loc, fmt::format("more than {} primitives: capsim reads at most {} "
                                              "(each needs about 1.7 KB of memory until it is "
@@ -372,7 +389,6 @@ class Interpreter {
                                              max_primitives_, max_primitives_));
     }
     const Context& ctx = contexts_[id];
-    Primitive p = scene_file::read_primitive(call);
     p.to_world = ctx.transform * p.to_world;
     bool finite = true;
     for (int c = 0; c < 4; ++c) {
@@ -418,6 +434,151 @@ class Interpreter {
     }
   }
 
+  // linear_extrude: its 2-D tree as a 3-D one over extruded leaves
+  // (scene_extrusion.h). With more than one leaf, a slab cut gives the caps.
+  [[gnu::noinline]] std::optional<CsgNode> extrusion(const Call& call, ContextId ctx) {
+    scene_file::Extrusion e = scene_file::read_linear_extrude(call);
+    const bool lone = shape_leaves(call) == 1;
+    if (!lone) scene_file::extend_beyond_caps(e);
+    const std::size_t first = all_primitives_.size();
+    std::vector<CsgNode> kids;
+    for (const Call& child : call.children)
+      if (auto node = shape(child, ctx, glm::dmat3(1.0), e)) kids.push_back(std::move(*node));
+    if (kids.empty()) return empty_union(call.loc);
+    CsgNode tree = pass_through(call, std::move(kids));
+    if (lone) return tree;
+    const std::vector<Primitive> leaves(all_primitives_.begin() + static_cast<std::ptrdiff_t>(first),
+                                        all_primitives_.end());
+    glm::dmat4 inverse = glm::inverse(contexts_[ctx].transform);
+    std::vector<Primitive> local;
+    for (Primitive p : leaves) {
+      p.to_world = inverse * p.to_world;
+      local.push_back(std::move(p));
+    }
+    CsgNode cut;
+    cut.op = CsgOp::Intersection;
+    cut.loc = call.loc;
+    cut.children.push_back(place(scene_file::extrusion_slab(local, e, call.loc), call, ctx));
+    cut.children.push_back(std::move(tree));
+    return cut;
+  }
+
+  // The 2-D leaves under an extrusion that are drawn (a polygon with holes
+  // counts each path).
+  static int shape_leaves(const Call& call) {
+    int n = 0;
+    for (const Call& child : call.children) {
+      bool dropped = false;
+      for (const auto& m : child.modifiers) dropped = dropped || m.symbol == '%' || m.symbol == '*';
+      if (dropped) continue;
+      if (child.name == "polygon") {
+        n += 2;  // holes or not: the slab is harmless for one path
+      } else if (is_shape_2d(child.name)) {
+        ++n;
+      } else {
+        n += shape_leaves(child);
+      }
+    }
+    return n;
+  }
+
+  // A call under linear_extrude, `plane` the 2-D transforms above it.
+  std::optional<CsgNode> shape(const Call& call, ContextId ctx, const glm::dmat3& plane,
+                               const scene_file::Extrusion& e) {
+    for (const auto& m : call.modifiers) {
+      if (m.symbol == '!')
+        throw SceneError(m.loc, "the '!' (root) modifier is not supported inside linear_extrude()");
+      if (m.symbol == '%' || m.symbol == '*') {
+        // Read and checked, then left out.
+        shape_node(call, push_dropped(ctx), plane, e);
+        contexts_.pop_back();
+        return std::nullopt;
+      }
+    }
+    return shape_node(call, ctx, plane, e);
+  }
+
+  [[gnu::noinline]] std::optional<CsgNode> shape_node(const Call& call, ContextId ctx, const glm::dmat3& plane,
+                                                      const scene_file::Extrusion& e) {
+    const std::string_view name = call.name;
+    if (name == "circle" || name == "square") {
+      no_children(call);
+      return place(name == "circle" ? scene_file::extrude_circle(call, plane, e)
+                                    : scene_file::extrude_square(call, plane, e),
+                   call, ctx);
+    }
+    if (name == "polygon") {
+      no_children(call);
+      return polygon_node(call, scene_file::extrude_polygon(call, plane, e), ctx);
+    }
+    const bool is_group = name == "union" || name == "difference" || name == "intersection" || name == "group" ||
+                          name == "render";
+    if (!is_group && !is_transform(name) && name != "color" && name != "material") {
+      if (name == "import") {
+        throw SceneError(call.loc, "import() under linear_extrude() reads a 2-D file (DXF, SVG), which is not "
+                                   "supported; capsim extrudes square, circle and polygon");
+      }
+      if (is_object(name) || is_setting(name)) {
+        throw SceneError(call.loc, fmt::format("{}() is not a 2-D shape: linear_extrude() extrudes square, circle "
+                                               "and polygon",
+                                               name));
+      }
+      if (name == "projection") {
+        unsupported_module(call, ctx);  // its children are solids
+        return std::nullopt;
+      }
+      // Noted, and its 2-D children read as a dropped subtree, so that every
+      // unsupported module under it is noted too.
+      note(module_error(call));
+      const ContextId dropped = push_dropped(ctx);
+      for (const Call& child : call.children) shape(child, dropped, plane, e);
+      contexts_.pop_back();
+      return std::nullopt;
+    }
+    glm::dmat3 inner = plane;
+    if (is_transform(name)) {
+      inner = plane * scene_file::read_transform_2d(call);
+    } else if (name == "color") {
+      scene_file::read_color(call);  // the extrusion is drawn in the colour around it
+    } else if (name == "material") {
+      scene_file::read_material(call, contexts_[ctx].material);
+    } else {
+      scene_file::read_pass_through(call);
+    }
+    std::vector<CsgNode> kids;
+    for (const Call& child : call.children)
+      if (auto node = shape(child, ctx, inner, e)) kids.push_back(std::move(*node));
+    if (!is_group || name == "group" || name == "render" || name == "union") return pass_through(call, std::move(kids));
+    CsgNode node;
+    node.op = name == "difference" ? CsgOp::Difference : CsgOp::Intersection;
+    node.loc = call.loc;
+    node.children = std::move(kids);
+    return node;
+  }
+
+  // The even-odd rule as CSG: the union of the outlines (paths at even
+  // depth), each less the paths directly inside it.
+  [[gnu::noinline]] CsgNode polygon_node(const Call& call, scene_file::ExtrudedPaths paths, ContextId ctx) {
+    const std::size_t n = paths.prisms.size();
+    std::vector<int> depth(n, 0);
+    for (std::size_t k = 0; k < n; ++k)
+      for (int at = paths.parent[k]; at >= 0; at = paths.parent[static_cast<std::size_t>(at)]) ++depth[k];
+    std::vector<std::optional<CsgNode>> leaf(n);
+    for (std::size_t k = 0; k < n; ++k) leaf[k] = place(std::move(paths.prisms[k]), call, ctx);
+    std::vector<CsgNode> outlines;
+    for (std::size_t k = 0; k < n; ++k) {
+      if (depth[k] % 2) continue;
+      CsgNode outline;
+      outline.op = CsgOp::Difference;
+      outline.loc = call.loc;
+      outline.children.push_back(std::move(*leaf[k]));
+      for (std::size_t h = 0; h < n; ++h)
+        if (paths.parent[h] == static_cast<int>(k)) outline.children.push_back(std::move(*leaf[h]));
+      outlines.push_back(outline.children.size() == 1 ? std::move(outline.children.front()) : std::move(outline));
+    }
+    return pass_through(call, std::move(outlines));
+  }
+
   void compact(CsgNode& node) {
     if (node.is_leaf) {
       scene_.primitives.push_back(std::move(all_primitives_[node.primitive]));
@@ -429,6 +590,8 @@ class Interpreter {
 
   std::shared_ptr<const std::string> file_;
   std::size_t max_primitives_;
+  std::size_t max_file_bytes_;  // of a file import() reads
+  std::string import_dir_;      // where import() looks first
   // The contexts of the calls being walked, outermost first. Levels refer to
   // them by index, never by reference across a call, as the list grows.
   std::vector<Context> contexts_;
@@ -457,7 +620,7 @@ namespace {
 }  // namespace
 
 Scene parse_scene(std::string_view text, const std::string& file_name, const ParseLimits& limits,
-                  double t) {
+                  double t, const std::string& import_dir) {
   auto file = std::make_shared<const std::string>(file_name);
   if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
@@ -470,7 +633,9 @@ Scene parse_scene(std::string_view text, const std::string& file_name, const Par
   // The calls view the text, not the tokens: the tokens' memory can go back to
   // the heap for the scene about to be built.
   std::vector<scene_file::Token>().swap(tokens);
-  return Interpreter(file, limits.max_primitives).run(calls, has_statements, end);
+  const std::string dir =
+      import_dir.empty() ? std::filesystem::path(file_name).parent_path().string() : import_dir;
+  return Interpreter(file, limits, dir).run(calls, has_statements, end);
 }
 
 std::string read_scene_file(const std::string& path, const ParseLimits& limits) {
@@ -497,8 +662,9 @@ std::string read_scene_file(const std::string& path, const ParseLimits& limits) 
   return text;
 }
 
-Scene parse_scene_file(const std::string& path, const ParseLimits& limits, double t) {
-  return parse_scene(read_scene_file(path, limits), path, limits, t);
+Scene parse_scene_file(const std::string& path, const ParseLimits& limits, double t,
+                       const std::string& import_dir) {
+  return parse_scene(read_scene_file(path, limits), path, limits, t, import_dir);
 }
 
 }  // namespace capsim

@@ -22,6 +22,7 @@ const char* to_string(PrimitiveKind kind) {
     case PrimitiveKind::Sphere: return "sphere";
     case PrimitiveKind::Box: return "box";
     case PrimitiveKind::Cone: return "cone";
+    case PrimitiveKind::Mesh: return "mesh";
   }
   return "?";
 }
@@ -34,8 +35,14 @@ Aabb object_bounds(PrimitiveKind kind) {
       return {glm::dvec3(0), glm::dvec3(1)};
     case PrimitiveKind::Cone:
       return {glm::dvec3(-1, -1, 0), glm::dvec3(1, 1, 1)};
+    case PrimitiveKind::Mesh:
+      break;
   }
   return {};
+}
+
+Aabb object_bounds(const Primitive& p) {
+  return p.kind == PrimitiveKind::Mesh ? p.mesh->bounds : object_bounds(p.kind);
 }
 
 const char* to_string(Projection projection) {

@@ -31,7 +31,7 @@ double largest_stretch(const glm::dmat3& a) {
 }
 
 Aabb placed_bounds(const Primitive& p) {
-  const Aabb canonical = object_bounds(p.kind);
+  const Aabb canonical = object_bounds(p);
   Aabb placed;
   for (int k = 0; k < 8; ++k) {
     const glm::dvec4 corner((k & 1) ? canonical.hi.x : canonical.lo.x,

@@ -163,6 +163,7 @@ PreparedPrimitive prepare_primitive(const Primitive& prim) {
   p.normal_to_world = glm::transpose(glm::inverse(glm::dmat3(prim.to_world)));
   p.cone_r1 = prim.cone_r1;
   p.cone_r2 = prim.cone_r2;
+  if (p.kind == PrimitiveKind::Mesh) p.mesh = std::make_shared<const MeshHierarchy>(build_mesh_hierarchy(prim.mesh));
   for (const glm::dvec3& c : box_corners(object_bounds(p)))
     p.world_bounds.extend(transform_point(p.to_world, c));
   if (p.kind == PrimitiveKind::Sphere) {
@@ -196,8 +197,17 @@ bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& 
     case PrimitiveKind::Cone:
       ++ops.cone_tests;
       return intersect_cone(o, d, p.cone_r1, p.cone_r2, span);
+    case PrimitiveKind::Mesh:
+      break;
   }
   return false;
+}
+
+void mesh_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
+                    std::vector<LineCrossing>& work, OpCounts& ops) {
+  ++ops.mesh_tests;
+  mesh_line_crossings(*p.mesh, transform_point(p.to_object, world_ray.origin),
+                      transform_vector(p.to_object, world_ray.dir), out, work, ops);
 }
 
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
@@ -233,6 +243,9 @@ glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_poin
         // At a pointed apex the gradient vanishes; the axis is the limit direction.
         if (glm::dot(n, n) == 0) n = {0, 0, k < 0 ? 1.0 : -1.0};
       }
+      break;
+    case PrimitiveKind::Mesh:
+      n = p.mesh->face_normals[static_cast<std::size_t>(s)];
       break;
   }
   ++ops.matvec;

@@ -29,7 +29,12 @@ void check_scene_range(const Scene& scene, const std::vector<PreparedPrimitive>&
     const Primitive& p = scene.primitives[i];
     const char* kind = to_string(p.kind);
     // The prepared primitive holds the inverse placement already.
-    const double stretch = 1 / largest_stretch(glm::dmat3(prims[i].to_object));
+    double stretch = 1 / largest_stretch(glm::dmat3(prims[i].to_object));
+    if (p.kind == PrimitiveKind::Mesh) {
+      // A mesh's size is in its own coordinates, not in its placement.
+      const glm::dvec3 e = p.mesh->bounds.extent();
+      stretch *= std::min({e.x, e.y, e.z});
+    }
     static_assert(kMaxSceneRatio == 1e6, "the messages below name the ratio");
     if (!(stretch >= least)) {
       throw SceneError(p.loc, fmt::format("this {} is too small for the scene: its smallest "

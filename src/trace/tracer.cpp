@@ -36,7 +36,7 @@ void insert_sorted(std::vector<Crossing>& pending, const Crossing& c) {
 // Moves `fresh` (crossings in no order) into `pending` (sorted latest-first):
 // sorted, then merged from the back, in O(m log m) plus the pending crossings
 // nearer than the latest new one. `later` orders the crossings of a ray
-// strictly (a primitive has one entry and one exit per ray), so the result is
+// strictly (a primitive's crossings along a ray lie at distinct t), so the result is
 // the one that inserting them one by one gives.
 void merge_fresh(std::vector<Crossing>& pending, std::vector<Crossing>& fresh) {
   std::sort(fresh.begin(), fresh.end(), [](const Crossing& a, const Crossing& b) { return later(a, b); });
@@ -53,6 +53,25 @@ void merge_fresh(std::vector<Crossing>& pending, std::vector<Crossing>& fresh) {
   fresh.clear();
 }
 
+// A mesh met by the ray: a leaf with any number of intervals along it. As a
+// convex primitive's, a crossing at or before the ray's start sets the leaf's
+// state there, and every crossing ahead goes to `add`.
+template <typename AddCrossing>
+void meet_mesh(std::uint32_t p, const PreparedPrimitive& prim, const Ray& ray, Tracer::Scratch& s, OpCounts& ops,
+               AddCrossing add) {
+  mesh_crossings(prim, ray, s.leaf_crossings, s.leaf_work, ops);
+  bool inside_at_start = false;
+  for (const LineCrossing& c : s.leaf_crossings) {
+    if (c.t <= ray.tmin) {
+      inside_at_start = c.enter;
+    } else if (c.t < ray.tmax) {
+      add(Crossing{c.t, p, c.surface, c.enter});
+      ++ops.hits_sorted;
+    }
+  }
+  if (inside_at_start) s.tree.toggle(p, ops);
+}
+
 // Intersects the primitives of one voxel that the ray has not met yet (the
 // mailbox): a primitive the ray starts in toggles its leaf at once, every
 // crossing ahead goes to `add`.
@@ -63,6 +82,10 @@ void meet_primitives(std::span<const std::uint32_t> voxel,
   for (const std::uint32_t p : voxel) {
     if (s.mailbox[p] == s.stamp) continue;
     s.mailbox[p] = s.stamp;
+    if (prims[p].kind == PrimitiveKind::Mesh) {
+      meet_mesh(p, prims[p], ray, s, ops, add);
+      continue;
+    }
     LineSpan span;
     if (!intersect_line(prims[p], ray, span, ops)) continue;
     if (span.t_exit <= ray.tmin || span.t_enter >= ray.tmax) continue;

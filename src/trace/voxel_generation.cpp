@@ -23,13 +23,13 @@ struct FacePlane {
 };
 
 // The object-space directions whose supporting planes bound a primitive: the box
-// faces always; for the curved primitives also the 45-degree planes, the extra
+// faces always (a mesh's own box); for the curved primitives also the 45-degree planes, the extra
 // circumscribing planes of the paper's fig. 2-2, which cut the corners of the box
 // that the sphere and the cone leave empty.
 std::vector<glm::dvec3> make_bounding_directions(PrimitiveKind kind) {
   std::vector<glm::dvec3> dirs = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0},
                                   {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
-  if (kind == PrimitiveKind::Box) return dirs;
+  if (kind == PrimitiveKind::Box || kind == PrimitiveKind::Mesh) return dirs;
   for (int sx : {-1, 1})
     for (int sy : {-1, 1}) {
       dirs.push_back(glm::dvec3(sx, sy, 0));
@@ -54,6 +54,8 @@ const std::vector<glm::dvec3>& bounding_directions(PrimitiveKind kind) {
       return box;
     case PrimitiveKind::Cone:
       return cone;
+    case PrimitiveKind::Mesh:
+      break;
   }
   return box;
 }
@@ -68,6 +70,13 @@ double support(const PreparedPrimitive& p, const glm::dvec3& u) {
     case PrimitiveKind::Cone: {
       const double radial = std::hypot(u.x, u.y);
       return std::max(p.cone_r1 * radial, p.cone_r2 * radial + u.z);
+    }
+    case PrimitiveKind::Mesh: {
+      // The mesh's own box bounds it: its faces are the box directions' planes.
+      const Aabb& b = p.mesh->mesh->bounds;
+      double h = 0;
+      for (int k = 0; k < 3; ++k) h += std::max(u[k] * b.lo[k], u[k] * b.hi[k]);
+      return h;
     }
   }
   return 0;

@@ -34,6 +34,9 @@ TEST(CostTerms, EachCellTermCountsItsOperation) {
   o.sphere_tests = 1;
   o.cone_tests = 2;
   o.box_tests = 3;
+  o.mesh_tests = 14;
+  o.mesh_node_tests = 15;
+  o.triangle_tests = 16;
   o.dda_setups = 4;
   o.dda_steps = 5;
   o.matvec = 6;
@@ -49,6 +52,9 @@ TEST(CostTerms, EachCellTermCountsItsOperation) {
   EXPECT_EQ(count(CostTerm::SphereTest), 1u);
   EXPECT_EQ(count(CostTerm::ConeTest), 2u);
   EXPECT_EQ(count(CostTerm::BoxTest), 3u);
+  EXPECT_EQ(count(CostTerm::MeshTest), 14u);
+  EXPECT_EQ(count(CostTerm::MeshNodeTest), 15u);
+  EXPECT_EQ(count(CostTerm::TriangleTest), 16u);
   EXPECT_EQ(count(CostTerm::DdaSetup), 4u);
   EXPECT_EQ(count(CostTerm::DdaStep), 5u);
   EXPECT_EQ(count(CostTerm::VoxelVisit), 4u + 5u);  // the set-up's voxel and one per step

@@ -166,6 +166,8 @@ TEST(Machine, MemoryNeedsBeyond64BitsDoNotWrapIntoAFit) {
 unsigned __int128 wide_pixel_cycles(const OpCounts& o, const CostTable& c) {
   auto t = [](std::uint64_t n, Cycles cost) { return static_cast<unsigned __int128>(n) * cost.count(); };
   return t(o.sphere_tests, c[CostTerm::SphereTest]) + t(o.cone_tests, c[CostTerm::ConeTest]) + t(o.box_tests, c[CostTerm::BoxTest]) +
+         t(o.mesh_tests, c[CostTerm::MeshTest]) + t(o.mesh_node_tests, c[CostTerm::MeshNodeTest]) +
+         t(o.triangle_tests, c[CostTerm::TriangleTest]) +
          t(o.dda_setups, c[CostTerm::DdaSetup]) + t(o.dda_steps, c[CostTerm::DdaStep]) + t(o.dda_setups, c[CostTerm::VoxelVisit]) +
          t(o.dda_steps, c[CostTerm::VoxelVisit]) + t(o.voxel_passes, c[CostTerm::VoxelPass]) +
          t(o.tree_visits, c[CostTerm::TreeVisit]) +

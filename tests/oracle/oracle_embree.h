@@ -50,6 +50,23 @@ inline RTCDevice shared_device() {
   return device.get();
 }
 
+// A ray for Embree: the ray in float, t from 0 on, no hit yet.
+inline RTCRayHit embree_ray(const capsim::Ray& ray) {
+  RTCRayHit rh{};
+  rh.ray.org_x = static_cast<float>(ray.origin.x);
+  rh.ray.org_y = static_cast<float>(ray.origin.y);
+  rh.ray.org_z = static_cast<float>(ray.origin.z);
+  rh.ray.dir_x = static_cast<float>(ray.dir.x);
+  rh.ray.dir_y = static_cast<float>(ray.dir.y);
+  rh.ray.dir_z = static_cast<float>(ray.dir.z);
+  rh.ray.tnear = 0.0f;
+  rh.ray.tfar = INFINITY;
+  rh.ray.mask = 0xFFFFFFFFu;
+  rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rh;
+}
+
 // Embree's RTCIntersectContext must come first: the callback receives a pointer
 // to it and recovers the rest of the query from the same address.
 struct CollectContext {
@@ -127,18 +144,7 @@ class EmbreeCollector {
     ctx.out = &out;
     ctx.seen = &seen_;
     ctx.stamp = ++stamp_;
-    RTCRayHit rh{};
-    rh.ray.org_x = static_cast<float>(ray.origin.x);
-    rh.ray.org_y = static_cast<float>(ray.origin.y);
-    rh.ray.org_z = static_cast<float>(ray.origin.z);
-    rh.ray.dir_x = static_cast<float>(ray.dir.x);
-    rh.ray.dir_y = static_cast<float>(ray.dir.y);
-    rh.ray.dir_z = static_cast<float>(ray.dir.z);
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = INFINITY;
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rh = embree_ray(ray);
     rtcIntersect1(scene_.get(), &ctx.rtc, &rh);
   }
 

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
 #include <vector>
 
 namespace oracle {
@@ -185,11 +186,18 @@ struct OraclePrimitive {
   capsim::Aabb world_bounds;
 };
 
+// The oracle's scenes hold the paper's convex primitives only; meshes are
+// judged against OpenSCAD's own meshes (mesh_oracle_test.cpp).
+[[noreturn]] inline void refuse_mesh() {
+  throw std::logic_error("the oracle traces only spheres, boxes and cones; mesh_oracle_test.cpp judges meshes");
+}
+
 inline capsim::Aabb canonical_bounds(capsim::PrimitiveKind kind) {
   switch (kind) {
     case capsim::PrimitiveKind::Sphere: return {glm::dvec3(-1), glm::dvec3(1)};
     case capsim::PrimitiveKind::Box: return {glm::dvec3(0), glm::dvec3(1)};
     case capsim::PrimitiveKind::Cone: return {glm::dvec3(-1, -1, 0), glm::dvec3(1)};
+    case capsim::PrimitiveKind::Mesh: refuse_mesh();
   }
   return {};
 }
@@ -220,6 +228,7 @@ inline Span line_span(const OraclePrimitive& p, const capsim::Ray& ray) {
     case capsim::PrimitiveKind::Sphere: return sphere_span(o, d);
     case capsim::PrimitiveKind::Box: return box_span(o, d);
     case capsim::PrimitiveKind::Cone: return cone_span(o, d, p.r1, p.r2);
+    case capsim::PrimitiveKind::Mesh: refuse_mesh();
   }
   return {};
 }
@@ -238,6 +247,7 @@ inline glm::dvec3 world_normal(const OraclePrimitive& p, const capsim::Ray& ray,
       else n = {q.x, q.y, -(p.r1 + k * q.z) * k};  // gradient of x^2 + y^2 - r(z)^2
       break;
     }
+    case capsim::PrimitiveKind::Mesh: refuse_mesh();
   }
   return glm::normalize(p.normal_to_world * n);
 }

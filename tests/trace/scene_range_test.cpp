@@ -30,6 +30,15 @@ TEST(SceneRange, RelativeToTheSceneWhenPrepared) {
                            "less than 1e-6 times the scene's size 4.00001, the finest detail capsim "
                            "traces");
   }
+  try {  // a mesh's own size counts, not only its placement
+    prepared("sphere(1);\npolyhedron([[0, 0, 0], [1e-7, 0, 0], [0, 1e-7, 0], [0, 0, 1e-7]], [[0, 1, 2], [0, 3, 1], "
+             "[0, 2, 3], [1, 3, 2]]);");
+    FAIL() << "prepared";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(e.loc().line, 2);
+    EXPECT_EQ(e.message().rfind("this mesh is too small for the scene: its smallest dimension 1e-07 is", 0), 0u)
+        << e.message();
+  }
   try {
     prepared("sphere(1);\ntranslate([1e7, 0, 0]) sphere(2);");
     FAIL() << "prepared";

@@ -1,0 +1,23 @@
+#pragma once
+// polyhedron() and import(): the calls that make a Mesh primitive. Like
+// scene_modules.h, these read one call only; parser.cpp places the result.
+
+#include "capsim/scene.h"
+#include "scene/scene_syntax.h"
+
+#include <cstddef>
+#include <string>
+
+namespace capsim::scene_file {
+
+// polyhedron(points, faces, convexity), or triangles= for faces (OpenSCAD's
+// older name). A mesh that is not closed is refused at the face concerned.
+Primitive read_polyhedron(const Call& call);
+
+// import(file, ...) of an .stl or .off file. A relative path is looked up
+// beside the scene file that names it, in `import_dir`, then in the current
+// directory (where an OpenSCAD export written elsewhere finds it when run
+// from the model's directory). Files larger than max_bytes are refused.
+Primitive read_import(const Call& call, const std::string& import_dir, std::size_t max_bytes);
+
+}  // namespace capsim::scene_file

@@ -1,0 +1,150 @@
+// Mesh leaves and extrusions against OpenSCAD's own result: OpenSCAD's
+// examples that use polyhedron(), import() and linear_extrude() are exported twice, to CSG (which capsim reads)
+// and, rendered by OpenSCAD with $fn = 96, to STL; Embree casts capsim's
+// primary rays at the STL's triangles. The depths must agree within 1 % on
+// at least 98 % of the pixels, leaving out those within one pixel of either
+// image's silhouette (the tessellated spheres and cylinders of the STL move
+// it). Skipped when openscad or the examples are not installed.
+
+#include "capsim/parser.h"
+#include "capsim/prepared_scene.h"
+#include "capsim/tracer.h"
+#include "oracle/oracle_embree.h"
+#include "support/cli_run.h"
+
+#include <fmt/core.h>
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+using namespace capsim;
+using namespace capsim::testing;
+
+namespace {
+
+const std::filesystem::path kExamples = "/usr/share/openscad/examples";
+constexpr int kSide = 96;
+
+bool have_openscad() { return std::system("command -v openscad >/dev/null 2>&1") == 0; }
+
+// The triangles of an STL (ASCII or binary) as Embree's scene.
+class StlScene {
+ public:
+  explicit StlScene(const std::string& stl) {
+    // capsim's own reader welds and checks the file; the triangles are OpenSCAD's.
+    const Scene s = parse_scene(fmt::format("import(\"{}\");", stl), "oracle.csg");
+    const TriangleMesh& m = *s.primitives.at(0).mesh;
+    RTCDevice device = oracle::shared_device();
+    scene_.reset(rtcNewScene(device));
+    RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(
+        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.vertices.size()));
+    for (std::size_t i = 0; i < m.vertices.size(); ++i)
+      for (int k = 0; k < 3; ++k) v[3 * i + k] = static_cast<float>(m.vertices[i][k]);
+    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                3 * sizeof(unsigned), m.triangles.size()));
+    for (std::size_t i = 0; i < m.triangles.size(); ++i)
+      for (int k = 0; k < 3; ++k) idx[3 * i + k] = m.triangles[i][k];
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(scene_.get(), g);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(scene_.get());
+  }
+
+  // The distance along a unit ray to the first triangle, +inf on a miss.
+  double depth(const Ray& r) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    RTCRayHit rh = oracle::embree_ray(r);
+    rtcIntersect1(scene_.get(), &ctx, &rh);
+    return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? kInfinity : rh.ray.tfar;
+  }
+
+ private:
+  oracle::SceneHandle scene_;
+};
+
+struct Agreement {
+  int compared = 0, agreeing = 0;
+};
+
+// Pixels with the same hit or miss in their whole 3 x 3 neighbourhood, in
+// both images, are compared: both miss, or both hit within 1 % of the depth.
+Agreement compare(const std::vector<double>& a, const std::vector<double>& b) {
+  Agreement r;
+  auto hit = [](const std::vector<double>& d, int i, int j) { return d[static_cast<std::size_t>(j) * kSide + i] < kInfinity; };
+  for (int j = 1; j + 1 < kSide; ++j)
+    for (int i = 1; i + 1 < kSide; ++i) {
+      bool edge = false;
+      for (int dj = -1; dj <= 1; ++dj)
+        for (int di = -1; di <= 1; ++di)
+          edge = edge || hit(a, i + di, j + dj) != hit(a, i, j) || hit(b, i + di, j + dj) != hit(b, i, j);
+      if (edge) continue;
+      ++r.compared;
+      const double da = a[static_cast<std::size_t>(j) * kSide + i], db = b[static_cast<std::size_t>(j) * kSide + i];
+      if ((da == kInfinity && db == kInfinity) || std::abs(da - db) <= 0.01 * db) ++r.agreeing;
+    }
+  return r;
+}
+
+// capsim's depth image of the .scad against Embree's of OpenSCAD's STL.
+void expect_agreement(const std::filesystem::path& scad, const std::string& label, const TempDir& dir) {
+  const std::string csg = dir / "model.csg", stl = dir / "model.stl";
+  ASSERT_EQ(std::system(fmt::format("openscad -o '{}' '{}' >/dev/null 2>&1", csg, scad.string()).c_str()), 0);
+  ASSERT_EQ(std::system(fmt::format("openscad -D '$fn=96' -o '{}' '{}' >/dev/null 2>&1", stl, scad.string()).c_str()),
+            0);
+  // The export names its imports as the .scad does: beside the .scad.
+  PrepareOptions options;
+  options.width = options.height = kSide;
+  const PreparedScene ps = prepare_scene(parse_scene_file(csg, {}, 0, scad.parent_path().string()), options);
+  const Tracer tracer(ps, {true, 0});
+  const StlScene reference(stl);
+  std::vector<double> ours(kSide * kSide), theirs(kSide * kSide);
+  Tracer::Scratch scratch(ps);
+  OpCounts ops;
+  for (int j = 0; j < kSide; ++j)
+    for (int i = 0; i < kSide; ++i) {
+      const Ray r = tracer.primary_ray(i, j);
+      Hit h;
+      ours[static_cast<std::size_t>(j) * kSide + i] = tracer.first_hit(r, scratch, ops, h) ? h.t : kInfinity;
+      theirs[static_cast<std::size_t>(j) * kSide + i] = reference.depth(r);
+    }
+  EXPECT_GT(ops.mesh_tests, 0u) << label;
+  const Agreement a = compare(ours, theirs);
+  ASSERT_GT(a.compared, kSide * kSide / 2) << label;
+  const double share = static_cast<double>(a.agreeing) / a.compared;
+  std::printf("%s: %d of %d pixels agree (%.4f)\n", label.c_str(), a.agreeing, a.compared, share);
+  EXPECT_GE(share, 0.98) << label;
+}
+
+class MeshOracle : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
+  const std::filesystem::path scad = kExamples / (std::string(GetParam()) + ".scad");
+  if (!have_openscad() || !std::filesystem::exists(scad)) GTEST_SKIP() << "openscad or its examples not installed";
+  TempDir dir;
+  expect_agreement(scad, GetParam(), dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, MeshOracle, ::testing::Values("Old/example011", "Old/example012", "Old/example016"),
+                         [](const auto& info) { return std::string(info.param).substr(4); });
+
+// Straight extrusions: a frustum of a polygon with a hole, less a circle and
+// a square, beside a scaled circle: each 2-D leaf its own solid, the caps cut once.
+TEST(MeshOracle, ExtrusionsAgreeWithOpenScadsStl) {
+  if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
+  TempDir dir;
+  const std::string scad = dir / "extrusions.scad";
+  std::ofstream(scad) << "linear_extrude(height = 6, scale = 0.6) difference() {\n"
+                         "  polygon([[0, 0], [10, 0], [10, 4], [4, 4], [4, 10], [0, 10], [1, 1], [3, 1], [1, 3]],\n"
+                         "          [[0, 1, 2, 3, 4, 5], [6, 7, 8]]);\n"
+                         "  translate([7, 2]) circle(r = 1);\n"
+                         "  translate([1, 6]) square([2, 2]);\n"
+                         "}\n"
+                         "translate([16, 4, 0]) linear_extrude(height = 5, center = true, scale = 1.5) circle(3);\n";
+  expect_agreement(scad, "extrusions", dir);
+}
+
+}  // namespace
