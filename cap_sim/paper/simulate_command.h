@@ -5,6 +5,7 @@
 // differ from the defaults, and a sweep can print its points the same way.
 
 #include "capsim/antialias.h"
+#include "machine/balance.h"
 #include "machine/cell_grid.h"
 #include "machine/window_controller.h"
 
@@ -26,6 +27,7 @@ struct SimulateSettings {
   bool primary_only = false;
   AntialiasOptions aa;  // --aa and --aa-threshold
   bool frame_average = false;
+  BalanceOptions balance;  // --balance, written only when not static
   int threads = 0;  // host threads; 0 = all hardware threads
   std::vector<std::string> defines;  // -D var=value for .scad input, in order
 };
