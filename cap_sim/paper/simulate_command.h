@@ -41,7 +41,8 @@ enum class CommandForm {
 // settings give one, --frames when given, each flag that is set and, with
 // antialiasing, its depth and threshold (the threshold in NonDefaults only if
 // not the default), each -D in single quotes as a shell takes it verbatim;
-// the other options as `form` asks.
+// the other options as `form` asks; on demand (--balance demand:TILE) no
+// --mode, which demand refuses.
 std::string simulate_command(const SimulateSettings& settings, CommandForm form);
 
 }  // namespace capsim::sim
