@@ -167,7 +167,9 @@ Task<BusTransfer> Cell::take_answer() {
 }
 
 // Trace a granted tile into video memory: its window controller shows the
-// tile where the grant says (balance.h).
+// tile where the grant says (balance.h). Antialiased, the tile traces every
+// corner of its pixels, those on its border again where a neighbouring tile
+// traces them too, then subdivides its pixels.
 Task<> Cell::trace_tile(int f, const BusTransfer& grant, Cycles requested) {
   const TracedCell& tile = wire_.frames[f].cells.at(grant.tile);
   const int pixels = wire_.frames[f].layout.window(grant.tile).pixel_count();
@@ -175,8 +177,18 @@ Task<> Cell::trace_tile(int f, const BusTransfer& grant, Cycles requested) {
   const Cycles work = tile.work.total();
   const Cycles round_trip = wire_.bus.transfer_cycles(kTileRequestBytes) + wire_.bus.transfer_cycles(kTileGrantBytes);
   wire_.kernel.spawn(request_tile_after(work > round_trip ? work - round_trip : Cycles()));
-  co_await clock_.compute(work, frame_name(fmt::format("trace tile {} ({} pixel{})", grant.tile, pixels, pixels == 1 ? "" : "s"), f),
-                          "tracing");
+  const std::string what = fmt::format("tile {} ({} pixel{})", grant.tile, pixels, pixels == 1 ? "" : "s");
+  if (!wire_.antialiased) {
+    co_await clock_.compute(work, frame_name("trace " + what, f), "tracing");
+  } else {
+    // Every corner of its pixels, then their subdivision: a tile has no
+    // neighbour to take corners from (balance.h).
+    co_await clock_.compute(tile.corner_work.total(), frame_name("trace corners of " + what, f), "corner tracing");
+    record_.trace_corners += tile.corner_work.total();
+    co_await clock_.compute(tile.subdivision_work.total(), frame_name("subdivide " + what, f), "subdivision",
+                            SpanCategory::Subdivide);
+    record_.subdivide += tile.subdivision_work.total();
+  }
   record_.tiles.push_back(TileRun{f, grant.tile, requested, grant.delivered, start, clock_.now()});
   record_.frame_busy[f] += tile.work.total();
   record_.work += tile.work;

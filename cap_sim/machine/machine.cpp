@@ -130,9 +130,10 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
         throw std::invalid_argument(fmt::format("frame {} is {}x{} where frame 0 is {}x{}", f, c.width, c.height,
                                                 cam.width, cam.height));
       const WindowLayout layout = frame_layout(config, cam.width, cam.height, static_cast<int>(f));
-      std::vector<TracedCell> traced = trace_cells(tracer, layout, config.profile.costs, threads,
-                                                   one ? &progress : nullptr, config.aa, config.screen,
-                                                   config.completion_cycles);
+      std::vector<TracedCell> traced =
+          trace_cells(tracer, layout, config.profile.costs, threads, one ? &progress : nullptr, config.aa,
+                      config.screen, config.completion_cycles,
+                      config.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner);
       work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config.profile));
       if (!one) progress.advance(1);
     }

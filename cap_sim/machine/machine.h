@@ -48,8 +48,8 @@ struct MachineConfig {
   // tests of the exchange; off, a cell keeps only their count.
   bool keep_received_corners = false;
   // How the cells share a frame's pixels (balance.h): static, by the windows
-  // of `mode`, or on demand, tile by tile; on demand neither antialiasing nor
-  // frame averaging is modelled, and both are refused.
+  // of `mode`, or on demand, tile by tile (antialiased, a tile traces every
+  // corner of its pixels itself); on demand frame averaging is refused.
   BalanceOptions balance;
 };
 
@@ -118,7 +118,7 @@ FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std
 
 // Throws std::invalid_argument when the config asks for what the machine
 // does not model: frame averaging outside dot mode; balanced on demand, a
-// tile that is not square, antialiasing or frame averaging.
+// tile that is not square, or frame averaging.
 void check_balance(const MachineConfig& config);
 
 // Runs the frames on the machine, in the units config asks for (an unresolved

@@ -334,8 +334,15 @@ void compose_screens(const MachineParts& m, const MachineConfig& config, Simulat
     TileOwners owners = tile_owners(m);
     for (std::size_t f = 0; f < m.frames.size(); ++f) {
       std::vector<const TracedCell*> video;
-      for (const TracedCell& tile : m.frames[f].cells) video.push_back(&tile);
-      result.screens.push_back(compose_frame(m.frames[f].layout, video, owners.start[f], config));
+      std::vector<Cycles> write_start;
+      for (std::size_t t = 0; t < m.frames[f].cells.size(); ++t) {
+        const TracedCell& tile = m.frames[f].cells[t];
+        video.push_back(&tile);
+        // Antialiased, a tile's pixels are written as it subdivides them,
+        // after tracing its corners.
+        write_start.push_back(owners.start[f][t] + tile.corner_work.total());
+      }
+      result.screens.push_back(compose_frame(m.frames[f].layout, video, write_start, config));
     }
     result.tile_cells = std::move(owners.cell);
     return;
@@ -359,8 +366,6 @@ void check_balance(const MachineConfig& config) {
   if (!config.balance.on_demand()) return;
   if (config.balance.tile_side() < 1)
     throw std::invalid_argument(fmt::format("a tile of {} pixels is not a square", config.balance.tile_pixels));
-  if (config.aa.depth > 0)
-    throw std::invalid_argument("balancing on demand does not model antialiasing's corner exchange");
   if (config.frame_average)
     throw std::invalid_argument("balancing on demand hands out tiles of one frame at a time: no frame averaging");
 }

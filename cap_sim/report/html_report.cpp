@@ -286,9 +286,8 @@ std::string antialiasing_section(const SimulationResult& r) {
     links += "</tr>\n";
   }
   return fmt::format(
-      "<section id=\"antialiasing\">\n<h2>Antialiasing</h2>\n<p>Depth {}, threshold {}: each cell traces the "
-      "corners it owns, exchanges corners with its neighbours over the {} links (a vertical step, then a "
-      "horizontal one that relays) and subdivides its pixels; the table of cells gives each phase.</p>\n"
+      "<section id=\"antialiasing\">\n<h2>Antialiasing</h2>\n<p>Depth {}, threshold {}: {}; the table of cells "
+      "gives each phase.</p>\n"
       "<table id=\"link-totals\" class=\"facts\">\n<caption>Link traffic</caption>\n"
       "<tr><th>Messages</th><td>{}</td></tr>\n<tr><th>Bytes</th><td>{}</td></tr>\n"
       "<tr><th>Hops</th><td>{} (at most {} for one message)</td></tr>\n"
@@ -299,7 +298,14 @@ std::string antialiasing_section(const SimulationResult& r) {
       "<table id=\"link-table\" class=\"numbers\">\n<thead><tr><th>Row</th><th>Col</th><th>Direction</th>"
       "{}</tr></thead>\n<tbody>\n{}"
       "</tbody>\n</table></div>\n</details>\n</section>\n",
-      r.config.aa.depth, r.config.aa.threshold, to_string(r.config.profile.link.topology), grouped(t.messages),
+      r.config.aa.depth, r.config.aa.threshold,
+      r.config.balance.on_demand()
+          ? std::string("each tile traces every corner of its pixels (those on its border again where a "
+                        "neighbouring tile does too) and subdivides its pixels, so no corner crosses the links")
+          : fmt::format("each cell traces the corners it owns, exchanges corners with its neighbours over the {} "
+                        "links (a vertical step, then a horizontal one that relays) and subdivides its pixels",
+                        to_string(r.config.profile.link.topology)),
+      grouped(t.messages),
       grouped(t.bytes), grouped(t.hops), t.max_hops, grouped(t.busiest.count()), t.busiest.seconds(hz),
       grouped(t.longest_wait.count()), r.links.size(), link_heads, links);
 }

@@ -240,10 +240,6 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
     const TracerSettings settings = check_tracer_options(*opts);
     sim::MachineConfig config = check_simulate_options(*sim);
     config.aa = settings.aa;
-    if (config.balance.on_demand() && config.aa.depth > 0)
-      throw UsageError(fmt::format("--balance {} does not model antialiasing's corner exchange: use --balance "
-                                   "static with --aa (docs/balancing.md)",
-                                   sim->balance.text));
     const bool png = is_png_path(settings.output);
     config.screen = png ? sim::ScreenFormat::Srgb8 : sim::ScreenFormat::Float;
     const int frames = settings.frames;

@@ -43,6 +43,17 @@ TEST(CliBalance, DemandScreenIsRendersAndTheReportsSayHowItWasShared) {
   }
 }
 
+// Antialiased, tiles trace their own corners: the screen is still render's.
+TEST(CliBalance, AntialiasedDemandScreenIsRenders) {
+  TempDir dir;
+  ASSERT_EQ(run_capsim("render " + kBalls + " -o " + (dir / "r.png") + " --size 30x20 --aa 2", dir).status, 0);
+  const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") +
+                                     " --size 30x20 --cells 2x2 --aa 2 --balance demand:9 --quiet",
+                                 dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(read_file(dir / "s.png"), read_file(dir / "r.png"));
+}
+
 // A static run reports as it did before --balance existed: no balancing
 // section, no "balance" among the options.
 TEST(CliBalance, StaticReportsHaveNoBalancing) {
@@ -65,7 +76,6 @@ TEST(CliBalance, RefusesWhatDemandDoesNotModelBeforeWritingAnything) {
   const std::string base = "simulate " + kBalls + " -o " + (dir / "s.png") + " --size 16x12 --report " +
                            (dir / "r.json") + " ";
   const std::pair<std::string, std::string> cases[] = {
-      {"--balance demand --aa 1", "--balance demand does not model antialiasing's corner exchange"},
       {"--balance demand:16 --frame-average", "--balance demand:16 hands out the tiles of one frame at a time"},
       {"--balance demand --mode line", "--balance demand hands out tiles, which the window controllers show"},
       {"--balance demand:15", "--balance demand:15 is not a balance scheme (accepted: static, demand or demand:TILE"},

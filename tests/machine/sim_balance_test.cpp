@@ -17,6 +17,7 @@
 #include <fmt/core.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <random>
 #include <string>
@@ -255,12 +256,63 @@ TEST(Balance, SequencesHandOutEachFramesTiles) {
   EXPECT_EQ(r.balancing.refusals, 2 * r.cells.size());
 }
 
+// Antialiased, a tile traces every corner of its pixels itself: the screen is
+// render's, and the cells' corner tracing is every corner's cost once for
+// each tile that has a pixel it is a corner of.
+TEST(Balance, AntialiasedTilesTraceTheirCornersThemselves) {
+  const PreparedScene scene = balls(30, 22);
+  const Tracer tracer(scene, TraceOptions{});
+  const AntialiasOptions aa{2, 0.3};
+  const Framebuffer rendered = render(tracer, 2, nullptr, nullptr, aa);
+  MachineConfig config = demand_config({2, 2}, 16);
+  config.aa = aa;
+  config.completion_cycles = true;
+  const WindowLayout tiles = tile_layout(config.balance, 30, 22);
+  std::vector<std::uint64_t> corner_cost((30 + 1) * (22 + 1), 0);
+  (void)trace_corners(
+      tracer, 1,
+      [&](int x, int y, const OpCounts& ops) {
+        corner_cost[static_cast<std::size_t>(y) * 31 + x] = pixel_cost(ops, config.profile.costs).total().count();
+      },
+      nullptr);
+  std::uint64_t expected = 0;
+  for (int y = 0; y <= 22; ++y)
+    for (int x = 0; x <= 30; ++x) {
+      std::vector<CellId> needers;
+      for (int py = y - 1; py <= y; ++py)
+        for (int px = x - 1; px <= x; ++px)
+          if (px >= 0 && py >= 0 && px < 30 && py < 22) {
+            const CellId t = tiles.owner({px, py}).cell;
+            if (std::find(needers.begin(), needers.end(), t) == needers.end()) needers.push_back(t);
+          }
+      expected += needers.size() * corner_cost[static_cast<std::size_t>(y) * 31 + x];
+    }
+  for (const int threads : {1, 2}) {
+    const SimulationResult r = simulate_frame(tracer, config, threads, false);
+    EXPECT_TRUE(same_floats(r.screens[0].screen.rgba, rendered.rgba)) << threads;
+    std::uint64_t corners = 0, subdivision = 0;
+    for (const CellReport& c : r.cells) {
+      corners += c.trace_corners.count();
+      subdivision += c.subdivide.count();
+      EXPECT_EQ(c.trace_corners + c.subdivide, c.busy);
+      EXPECT_EQ(c.corners_received, 0u) << "no corner crosses the links";
+    }
+    EXPECT_EQ(corners, expected);
+    EXPECT_TRUE(r.links.empty());
+    expect_conserved(r, "antialiased");
+    // A tile's pixels reach the screen as it subdivides them, after its corners.
+    for (const CellReport& c : r.cells)
+      for (const TileRun& t : c.tiles) {
+        const CellWindow& w = tiles.window(t.tile);
+        const ScreenPixel last = w.screen_pixel(w.pixel_count() - 1);
+        EXPECT_EQ(r.screens[0].completion_cycles[static_cast<std::size_t>(last.y) * 30 + last.x], t.end.count());
+      }
+  }
+}
+
 TEST(Balance, RefusesWhatItDoesNotModel) {
   const PreparedScene scene = balls(8, 8);
   const Tracer tracer(scene, TraceOptions{});
-  MachineConfig aa = demand_config({2, 2}, 4);
-  aa.aa = {1, 0.3};
-  EXPECT_THROW(simulate_frame(tracer, aa, 1, false), std::invalid_argument);
   MachineConfig averaged = demand_config({2, 2}, 4);
   averaged.frame_average = true;
   EXPECT_THROW(simulate_frame(tracer, averaged, 1, false), std::invalid_argument);
