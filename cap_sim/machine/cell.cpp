@@ -1,5 +1,6 @@
 #include "machine/cell.h"
 
+#include "machine/balance.h"
 #include "machine/frame_protocol.h"
 
 #include <fmt/core.h>
@@ -16,7 +17,9 @@ Cell::Cell(CellId id, int timeline_track, const Wiring& wiring)
       bus_inbox_(wiring.kernel),
       link_inbox_(wiring.kernel) {
   video_.reserve(wiring.frames.size());
-  for (FrameWork& f : wiring.frames) video_.push_back(std::move(f.cells.at(id)));
+  // On demand the tiles stay with the frame: any cell may trace any of them.
+  if (!wiring.on_demand)
+    for (FrameWork& f : wiring.frames) video_.push_back(std::move(f.cells.at(id)));
   record_.frame_busy.resize(wiring.frames.size());
   record_.frame_write_start.resize(wiring.frames.size());
 }
@@ -25,7 +28,9 @@ Process Cell::run() {
   for (std::size_t u = 0; u < wire_.units.size(); ++u) {
     const DistributionUnit& unit = wire_.units[u];
     co_await receive(u);
-    if (!wire_.antialiased) {
+    if (wire_.on_demand) {
+      co_await trace_tiles(unit);
+    } else if (!wire_.antialiased) {
       co_await trace(unit);
     } else {
       co_await trace_corners(unit);
@@ -109,6 +114,87 @@ Task<> Cell::report_done() {
   record_.comm += done.delivered - done.requested;
   record_.finish = done.delivered;
   record_.unit_finish.push_back(done.delivered);
+}
+
+// Balanced on demand (balance.h): one request is outstanding at a time. The
+// first goes as the unit starts; then, while tracing a tile, the cell's bus
+// interface sends the next one when the tile has an uncontended round trip
+// (request and grant) left, so that the grant arrives as the tile ends: the
+// cell waits only when the bus or the host is slower than that, and holds no
+// tile it has not started for longer. The unit's tiles are of its one frame.
+Task<> Cell::trace_tiles(const DistributionUnit& unit) {
+  if (unit.frames != 1) throw std::logic_error("tiles are handed out one frame at a time");
+  const int f = unit.first_frame;
+  record_.frame_write_start[f] = clock_.now();
+  const Cycles sending = clock_.now();
+  co_await request_tile();
+  record_.comm += clock_.now() - sending;
+  for (BusTransfer answer = co_await take_answer(); answer.message == BusMessage::Grant;
+       answer = co_await take_answer())
+    co_await trace_tile(f, answer, last_request_);
+}
+
+Task<> Cell::request_tile() {
+  const BusTransfer r = co_await wire_.bus.transfer(id_, kHost, kTileRequestBytes, BusMessage::Request);
+  clock_.span("request tile", SpanCategory::Message, r.granted, r.delivered, r.bytes);
+  ++record_.tile_requests;
+  record_.balance_bytes_sent += r.bytes;
+  last_request_ = r.requested;
+}
+
+Process Cell::request_tile_after(Cycles delay) {
+  co_await wire_.kernel.delay(delay);
+  co_await request_tile();
+}
+
+// The host's answer to its request: a grant or "no tile". Waiting for it with
+// nothing to trace is counted.
+Task<BusTransfer> Cell::take_answer() {
+  const Cycles waiting = clock_.now();
+  BusTransfer t = co_await bus_inbox_.receive();
+  if (t.message != BusMessage::Grant && t.message != BusMessage::NoTile)
+    throw std::logic_error(fmt::format("{} expected a grant or \"no tile\" from the host, got \"{}\"",
+                                       cell_name(id_), to_string(t.message)));
+  record_.balance_bytes_received += t.bytes;
+  const Cycles waited = clock_.now() - waiting;
+  if (waited > Cycles()) {
+    ++record_.tile_waits;
+    record_.tile_wait += waited;
+    record_.longest_tile_wait = std::max(record_.longest_tile_wait, waited);
+    clock_.wait("wait for tile", waiting, clock_.now());
+  }
+  co_return t;
+}
+
+// Trace a granted tile into video memory: its window controller shows the
+// tile where the grant says (balance.h). Antialiased, the tile traces every
+// corner of its pixels, those on its border again where a neighbouring tile
+// traces them too, then subdivides its pixels.
+Task<> Cell::trace_tile(int f, const BusTransfer& grant, Cycles requested) {
+  const TracedCell& tile = wire_.frames[f].cells.at(grant.tile);
+  const int pixels = wire_.frames[f].layout.window(grant.tile).pixel_count();
+  const Cycles start = clock_.now();
+  const Cycles work = tile.work.total();
+  const Cycles round_trip = wire_.bus.transfer_cycles(kTileRequestBytes) + wire_.bus.transfer_cycles(kTileGrantBytes);
+  wire_.kernel.spawn(request_tile_after(work > round_trip ? work - round_trip : Cycles()));
+  const std::string what = fmt::format("tile {} ({} pixel{})", grant.tile, pixels, pixels == 1 ? "" : "s");
+  if (!wire_.antialiased) {
+    co_await clock_.compute(work, frame_name("trace " + what, f), "tracing");
+  } else {
+    // Every corner of its pixels, then their subdivision: a tile has no
+    // neighbour to take corners from (balance.h).
+    co_await clock_.compute(tile.corner_work.total(), frame_name("trace corners of " + what, f), "corner tracing");
+    record_.trace_corners += tile.corner_work.total();
+    co_await clock_.compute(tile.subdivision_work.total(), frame_name("subdivide " + what, f), "subdivision",
+                            SpanCategory::Subdivide);
+    record_.subdivide += tile.subdivision_work.total();
+  }
+  record_.tiles.push_back(TileRun{f, grant.tile, requested, grant.delivered, start, clock_.now()});
+  record_.frame_busy[f] += tile.work.total();
+  record_.work += tile.work;
+  record_.rays += tile.rays;
+  record_.ops += tile.ops;
+  record_.pixels += static_cast<std::uint64_t>(pixels);
 }
 
 // A step's messages, in order; the sender continues as each has left it. What

@@ -36,6 +36,9 @@ class Cell {
     const std::vector<DistributionUnit>& units;
     bool antialiased;
     bool keep_received_corners;  // MachineConfig::keep_received_corners
+    // Balanced on demand: each frame's work is its tiles (frames[f].cells[t],
+    // laid out by frames[f].layout), traced as the host grants them.
+    bool on_demand = false;
   };
 
   // Takes this cell's traced work out of every frame of wiring.frames.
@@ -43,7 +46,8 @@ class Cell {
 
   // The program every cell runs (§3.3), for each distribution unit of the run
   // in turn: receive, trace, report done; antialiased: receive, trace
-  // corners, exchange corners, subdivide, report done. Precondition: the host
+  // corners, exchange corners, subdivide, report done; balanced on demand:
+  // receive, trace tiles as granted, report done. Precondition: the host
   // broadcasts what unit_broadcasts() lists and collects a "done" from every
   // cell before the next unit's broadcasts.
   Process run();
@@ -65,6 +69,14 @@ class Cell {
   Task<> exchange_corners(const CornerExchange& exchange);
   Task<> subdivide(const DistributionUnit& unit);
   Task<> report_done();
+  // Balanced on demand: ask the host for a tile (now, or from the cell's bus
+  // interface while it traces), and take in its answer; trace the tiles it
+  // grants.
+  Task<> trace_tiles(const DistributionUnit& unit);
+  Task<> request_tile();
+  Process request_tile_after(Cycles delay);
+  Task<BusTransfer> take_answer();
+  Task<> trace_tile(int frame, const BusTransfer& grant, Cycles requested);
   // The two halves of each step of exchange_corners.
   Task<> send_corners(const CornerExchange& exchange, ExchangeStep step);
   Task<> receive_corners(const CornerExchange& exchange, ExchangeStep step);
@@ -94,7 +106,8 @@ class Cell {
   Mailbox<LinkMessage> link_inbox_;
   std::vector<LinkMessage> early_;  // horizontal messages that came before the vertical ones
   std::vector<CornerIndex> unit_received_;  // corners taken in during this unit's exchange
-  std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced
+  std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced (static)
+  Cycles last_request_;  // on demand: when its latest request left
 };
 
 }  // namespace capsim::sim

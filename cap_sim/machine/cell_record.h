@@ -15,6 +15,15 @@
 
 namespace capsim::sim {
 
+// A tile a cell traced, balanced on demand (balance.h): which, and when.
+struct TileRun {
+  int frame = 0;
+  int tile = 0;
+  Cycles requested;  // its request left for the host
+  Cycles granted;    // the grant was in the cell's memory
+  Cycles start, end;  // the cell traced it
+};
+
 // What a cell measured about its run.
 struct CellRecord {
   Cycles busy;    // tracing (corners, pixels, subdivision), all frames
@@ -35,6 +44,15 @@ struct CellRecord {
   // Per frame: when it began writing the frame's pixels into video memory, in
   // video-memory order (tracing them; antialiased, subdividing them in phase 3).
   std::vector<Cycles> frame_write_start;
+  // Balanced on demand: the tiles it traced, in order; the requests it sent;
+  // how often and how long it waited for an answer with nothing to trace
+  // (the waits for a grant, and for the last answer, "no tile"); the
+  // balancing bytes it sent (requests) and took in (grants, "no tile").
+  std::vector<TileRun> tiles;
+  std::uint64_t tile_requests = 0;
+  std::uint64_t tile_waits = 0;
+  Cycles tile_wait, longest_tile_wait;
+  std::uint64_t balance_bytes_sent = 0, balance_bytes_received = 0;
 };
 
 struct CellReport : CellRecord {

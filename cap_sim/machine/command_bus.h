@@ -33,6 +33,7 @@ struct BusTransfer {
   Endpoint sender = kHost;
   Endpoint receiver = kAllCells;
   std::uint64_t bytes = 0;
+  int tile = -1;     // a grant: the tile it hands out (balance.h)
   Cycles requested;  // the sender asked for the bus
   Cycles granted;    // the bus was granted (arbitration starts)
   Cycles released;   // the last byte left the bus; the bus is free again
@@ -59,7 +60,8 @@ class CommandBus {
     void await_suspend(std::coroutine_handle<> h) { bus.request(&transfer, h); }
     BusTransfer await_resume() { return std::move(transfer); }
   };
-  TransferAwaiter transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes, BusMessage message);
+  TransferAwaiter transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes, BusMessage message,
+                           int tile = -1);
 
   // Every completed transfer, in delivery order.
   const std::vector<BusTransfer>& log() const { return log_; }

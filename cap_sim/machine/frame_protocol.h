@@ -10,6 +10,10 @@
 //   host -> all cells  start       the start command (kStartCommandBytes)
 //   cell -> host       done        the cell has every pixel of the unit in video
 //                                  memory (kDoneMessageBytes: the cell's id)
+// Balanced on demand (balance.h), between start and done, any number of times:
+//   cell -> host       request     the cell asks for a tile
+//   host -> cell       grant       a tile, or
+//   host -> cell       no tile     none is left
 // Over the neighbour links, antialiased only, from cell to cell: the corner
 // exchange's messages (CornerPacket; corner_exchange.h plans them).
 
@@ -20,7 +24,7 @@
 
 namespace capsim::sim {
 
-enum class BusMessage : std::uint8_t { Program, Scene, VoxelData, Start, Done };
+enum class BusMessage : std::uint8_t { Program, Scene, VoxelData, Start, Done, Request, Grant, NoTile };
 
 // The one table of bus messages: each value and its name as the timeline and
 // the reports print it ("broadcast voxel data", "done (cell[0,3])"), in the
@@ -31,7 +35,8 @@ struct BusMessageName {
 };
 inline constexpr BusMessageName kBusMessages[] = {
     {BusMessage::Program, "program"}, {BusMessage::Scene, "scene"}, {BusMessage::VoxelData, "voxel data"},
-    {BusMessage::Start, "start"},     {BusMessage::Done, "done"},
+    {BusMessage::Start, "start"},     {BusMessage::Done, "done"},           {BusMessage::Request, "request"},
+    {BusMessage::Grant, "grant"},     {BusMessage::NoTile, "no tile"},
 };
 
 constexpr std::string_view to_string(BusMessage m) { return kBusMessages[static_cast<std::size_t>(m)].name; }

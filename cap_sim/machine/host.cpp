@@ -1,5 +1,6 @@
 #include "machine/host.h"
 
+#include "machine/balance.h"
 #include "machine/frame_protocol.h"
 
 #include <fmt/core.h>
@@ -22,7 +23,10 @@ Process Host::run() {
     unit_start_.push_back(clock_.now());
     co_await generate_voxels(wire_.units[u]);
     co_await broadcast(u);
-    co_await collect_done();
+    if (wire_.on_demand)
+      co_await hand_out_tiles(wire_.units[u]);
+    else
+      co_await collect_done();
     if (wire_.unit_ends) wire_.unit_ends(u);
   }
 }
@@ -61,13 +65,49 @@ Task<> Host::collect_done() {
   clock_.span("wait for cells", SpanCategory::Wait, collecting, clock_.now());
 }
 
+// The host answers one request at a time, in the order they reached it; its
+// own handling takes no cycles beyond the bus transfer of the answer
+// (docs/balancing.md). Tiles go out in their order, row by row.
+Task<> Host::hand_out_tiles(const DistributionUnit& unit) {
+  if (unit.frames != 1) throw std::logic_error("tiles are handed out one frame at a time");
+  const Cycles serving = clock_.now();
+  const int tiles = wire_.frames[unit.first_frame].layout.grid().cell_count();
+  int next = 0;
+  for (int done = 0; done < cell_count_;) {
+    const BusTransfer t = co_await bus_inbox_.receive();
+    if (t.message == BusMessage::Done) {
+      ++done;
+      continue;
+    }
+    if (t.message != BusMessage::Request)
+      throw std::logic_error(fmt::format("host expected \"request\" or \"done\", got \"{}\"", to_string(t.message)));
+    ++balancing_.requests;
+    balancing_.bytes_received += t.bytes;
+    if (next < tiles) {
+      const BusTransfer grant =
+          co_await wire_.bus.transfer(kHost, t.sender, kTileGrantBytes, BusMessage::Grant, next++);
+      ++balancing_.grants;
+      balancing_.bytes_sent += grant.bytes;
+    } else {
+      const BusTransfer refusal = co_await wire_.bus.transfer(kHost, t.sender, kNoTileBytes, BusMessage::NoTile);
+      ++balancing_.refusals;
+      balancing_.bytes_sent += refusal.bytes;
+    }
+  }
+  unit_end_.push_back(clock_.now());
+  clock_.span("hand out tiles", SpanCategory::Wait, serving, clock_.now());
+}
+
 std::uint64_t Host::bytes_of(const Broadcast& b) const {
   switch (b.message) {
     case BusMessage::Program: return program_bytes_;
     case BusMessage::Scene: return wire_.frames[b.frame].footprint.scene_bytes();
     case BusMessage::VoxelData: return wire_.frames[b.frame].footprint.voxel_bytes();
     case BusMessage::Start: return kStartCommandBytes;
-    case BusMessage::Done: break;
+    case BusMessage::Done:
+    case BusMessage::Request:
+    case BusMessage::Grant:
+    case BusMessage::NoTile: break;
   }
   throw std::logic_error(fmt::format("the host does not broadcast \"{}\"", to_string(b.message)));
 }

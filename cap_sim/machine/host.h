@@ -34,6 +34,15 @@ class Host {
     // starts and once its last completion message is in, in no simulated
     // time. May be empty.
     std::function<void(std::size_t unit)> unit_begins, unit_ends;
+    // Balanced on demand: each frame's tiles (frames[f].layout's windows) are
+    // handed out to the cells that ask (balance.h).
+    bool on_demand = false;
+  };
+
+  // The balancing traffic it handled, all units (on demand).
+  struct Balancing {
+    std::uint64_t requests = 0, grants = 0, refusals = 0;  // refusals: "no tile"
+    std::uint64_t bytes_received = 0, bytes_sent = 0;
   };
 
   Host(const Wiring& wiring, int timeline_track, int cell_count, std::uint64_t program_bytes);
@@ -50,12 +59,16 @@ class Host {
   const std::vector<Cycles>& unit_end() const { return unit_end_; }
   // The cycles it spent generating voxel data, all units.
   Cycles busy() const { return busy_; }
+  const Balancing& balancing() const { return balancing_; }
 
  private:
   // The phases of run(), each for one unit.
   Task<> generate_voxels(const DistributionUnit& unit);
   Task<> broadcast(std::size_t unit);
   Task<> collect_done();
+  // On demand: answer every request, a tile while the unit's frame has one
+  // left, else "no tile", until every cell has sent "done".
+  Task<> hand_out_tiles(const DistributionUnit& unit);
   // The bytes of a broadcast: the program, a frame's scene or voxel data
   // (its footprint), the start command.
   std::uint64_t bytes_of(const Broadcast& b) const;
@@ -67,6 +80,7 @@ class Host {
   ProgramClock clock_;  // counts its busy cycles in busy_
   Mailbox<BusTransfer> bus_inbox_;
   std::vector<Cycles> unit_start_, unit_end_;
+  Balancing balancing_;
 };
 
 }  // namespace capsim::sim

@@ -74,6 +74,7 @@ std::uint64_t simulation_memory_until_written(const MachineConfig& config, int w
 }
 
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame) {
+  if (config.balance.on_demand()) return tile_layout(config.balance, width, height);
   return WindowLayout(config.mode, config.cells, width, height,
                       config.frame_average ? dot_shift_for_frame(config.cells, frame % unit_frames(config))
                                            : DotShift{});
@@ -94,8 +95,7 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
 SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const MachineConfig& config,
                                  int threads, bool show_progress) {
   if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
-  if (config.frame_average && config.mode != PixelMode::Dot)
-    throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
+  check_balance(config);
   // Refuse a unit that does not fit before spending time tracing it; frame
   // averaged, the units' size decides the frames' dot shifts, so it is
   // resolved first.
@@ -130,9 +130,10 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
         throw std::invalid_argument(fmt::format("frame {} is {}x{} where frame 0 is {}x{}", f, c.width, c.height,
                                                 cam.width, cam.height));
       const WindowLayout layout = frame_layout(config, cam.width, cam.height, static_cast<int>(f));
-      std::vector<TracedCell> traced = trace_cells(tracer, layout, config.profile.costs, threads,
-                                                   one ? &progress : nullptr, config.aa, config.screen,
-                                                   config.completion_cycles);
+      std::vector<TracedCell> traced =
+          trace_cells(tracer, layout, config.profile.costs, threads, one ? &progress : nullptr, config.aa,
+                      config.screen, config.completion_cycles,
+                      config.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner);
       work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config.profile));
       if (!one) progress.advance(1);
     }

@@ -5,11 +5,13 @@
 // alone decides simulated time.
 
 #include "kernel/timeline.h"
+#include "machine/balance.h"
 #include "machine/cell_grid.h"
 #include "machine/cell_record.h"
 #include "machine/corner_exchange.h"
 #include "machine/cost_profile.h"
 #include "machine/frame_work.h"
+#include "machine/host.h"
 #include "machine/neighbour_links.h"
 #include "machine/scene_footprint.h"
 #include "machine/traced_cells.h"
@@ -45,6 +47,10 @@ struct MachineConfig {
   // Keep every corner each cell took in (CellReport::received_corners), for
   // tests of the exchange; off, a cell keeps only their count.
   bool keep_received_corners = false;
+  // How the cells share a frame's pixels (balance.h): static, by the windows
+  // of `mode`, or on demand, tile by tile (antialiased, a tile traces every
+  // corner of its pixels itself); on demand frame averaging is refused.
+  BalanceOptions balance;
 };
 
 // One frame as the video bus showed it, in the run's screen format: floats
@@ -94,6 +100,11 @@ struct SimulationResult {
   std::vector<FrameScreen> screens;  // one per frame
   std::vector<UnitTimes> units;
   BusTotals bus;
+  // Balanced on demand: what the host handled, and per frame, tile by tile
+  // (in tile order), the cell that traced it.
+  Host::Balancing balancing;
+  BusTotals balance_bus;  // the bus's requests, grants and "no tile" answers
+  std::vector<std::vector<CellId>> tile_cells;
   std::vector<LinkTraffic> links;          // every link that carried a message
   std::vector<LinkMessage> link_messages;  // in order of arrival
   Timeline timeline;
@@ -104,6 +115,11 @@ struct SimulationResult {
 // trace_cells on `scene` with `layout` and the profile's cell costs.
 FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
                      const CostProfile& profile);
+
+// Throws std::invalid_argument when the config asks for what the machine
+// does not model: frame averaging outside dot mode; balanced on demand, a
+// tile that is not square, or frame averaging.
+void check_balance(const MachineConfig& config);
 
 // Runs the frames on the machine, in the units config asks for (an unresolved
 // frame_average_group resolved by frames_per_unit). Precondition: the frames
@@ -135,6 +151,7 @@ std::uint64_t simulation_memory_until_written(const MachineConfig& config, int w
 
 // The window layout of frame f of a run: frame averaged, frame k of its unit
 // (k = f mod unit_frames(config)) takes dot_shift_for_frame(grid, k).
+// Balanced on demand, the tiles (tile_layout): each window is a tile.
 WindowLayout frame_layout(const MachineConfig& config, int width, int height, int frame);
 
 // trace_cells for every frame + run_frames. threads: 0 = all hardware threads;

@@ -83,4 +83,10 @@ LinkTotals link_totals(const SimulationResult& r) {
   return t;
 }
 
+double balance_bus_percent(const SimulationResult& r) {
+  return r.frame.count() > 0
+             ? 100.0 * static_cast<double>(r.balance_bus.busy.count()) / static_cast<double>(r.frame.count())
+             : 0.0;
+}
+
 }  // namespace capsim::sim

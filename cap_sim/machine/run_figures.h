@@ -38,6 +38,11 @@ std::vector<LoadSpread> unit_spreads(const SimulationResult& r);
 // frames, or the frame-averaged groups).
 double max_deviation_percent(const SimulationResult& r);
 
+// Balanced on demand: the cycles the command bus was held by balancing
+// messages (requests, grants, "no tile") as a share of the run's time, in
+// percent; 0 for a run of no time.
+double balance_bus_percent(const SimulationResult& r);
+
 // The neighbour links' traffic over a frame (antialiasing's corner exchange).
 struct LinkTotals {
   std::uint64_t messages = 0, bytes = 0;

@@ -46,48 +46,49 @@ std::unique_ptr<CornerExchange> plan_exchange(const std::vector<FrameWork>& fram
   return std::make_unique<CornerExchange>(layouts, unit.first_frame);
 }
 
-// When each screen pixel of a frame reached video memory: a cell writes its
-// pixels in video-memory order from its frame_write_start, pixel k when the
-// write cycles of pixels 0 to k have passed.
-std::vector<std::uint64_t> completion_cycles(const WindowLayout& layout,
-                                             const std::vector<std::unique_ptr<Cell>>& cells, int frame) {
+// When each screen pixel of a frame reached video memory: the window w of
+// the layout (a cell's, or on demand a tile's) holds video[w], written in
+// video-memory order from write_start[w], pixel k when the write cycles of
+// pixels 0 to k have passed.
+std::vector<std::uint64_t> completion_cycles(const WindowLayout& layout, const std::vector<const TracedCell*>& video,
+                                             const std::vector<Cycles>& write_start) {
   std::vector<std::uint64_t> out(static_cast<std::size_t>(layout.width()) * layout.height());
-  for (const auto& cell : cells)
-    if (cell->video_memory(frame).write_cycles.size() !=
-        static_cast<std::size_t>(layout.window(cell->id()).pixel_count()))
+  for (std::size_t w = 0; w < video.size(); ++w)
+    if (video[w]->write_cycles.size() != static_cast<std::size_t>(layout.window(static_cast<CellId>(w)).pixel_count()))
       throw std::logic_error("completion cycles need the write cycles traced ahead (trace_cells' keep_write_cycles)");
-  std::vector<std::uint64_t> clock(cells.size());
-  for (std::size_t c = 0; c < cells.size(); ++c) clock[c] = cells[c]->record().frame_write_start.at(frame).count();
-  // A cell's pixels come in video-memory order on one thread: its clock is its own.
-  for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
-    clock[c] += cells[c]->video_memory(frame).write_cycles[k];
-    out[s] = clock[c];
+  std::vector<std::uint64_t> clock(video.size());
+  for (std::size_t w = 0; w < video.size(); ++w) clock[w] = write_start[w].count();
+  // A window's pixels come in video-memory order on one thread: its clock is its own.
+  for_each_window_pixel(layout, [&](CellId w, int k, std::size_t s) {
+    clock[w] += video[w]->write_cycles[k];
+    out[s] = clock[w];
   });
   return out;
 }
 
-// Every video memory of a frame, composed as the video bus shows it.
-FrameScreen compose_frame(const WindowLayout& layout, const std::vector<std::unique_ptr<Cell>>& cells,
-                          int frame, const MachineConfig& config) {
+// A frame as the video bus shows it: every window of its layout (a cell's,
+// or on demand a tile's) with its video memory, composed.
+FrameScreen compose_frame(const WindowLayout& layout, const std::vector<const TracedCell*>& video,
+                          const std::vector<Cycles>& write_start, const MachineConfig& config) {
   FrameScreen out;
-  if (config.completion_cycles) out.completion_cycles = completion_cycles(layout, cells, frame);
+  if (config.completion_cycles) out.completion_cycles = completion_cycles(layout, video, write_start);
   if (config.screen == ScreenFormat::Srgb8) {
-    std::vector<const std::vector<unsigned char>*> video;
-    for (const auto& cell : cells) video.push_back(&cell->video_memory(frame).srgb8);
-    out.screen_srgb8 = compose_screen_srgb8(layout, video);
+    std::vector<const std::vector<unsigned char>*> bytes;
+    for (const TracedCell* v : video) bytes.push_back(&v->srgb8);
+    out.screen_srgb8 = compose_screen_srgb8(layout, bytes);
     return out;
   }
-  std::vector<const Framebuffer*> video;
-  for (const auto& cell : cells) video.push_back(&cell->video_memory(frame).samples);
-  out.screen = compose_screen(layout, video);
+  std::vector<const Framebuffer*> samples;
+  for (const TracedCell* v : video) samples.push_back(&v->samples);
+  out.screen = compose_screen(layout, samples);
   out.pixel_cycles.assign(static_cast<std::size_t>(layout.width()) * layout.height(), 0.0f);
   for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
-    out.pixel_cycles[s] = static_cast<float>(cells[c]->video_memory(frame).pixel_cycles[k]);
+    out.pixel_cycles[s] = static_cast<float>(video[c]->pixel_cycles[k]);
   });
   if (config.aa.depth > 0) {
     out.pixel_samples.assign(out.pixel_cycles.size(), 0.0f);
     for_each_window_pixel(layout, [&](CellId c, int k, std::size_t s) {
-      out.pixel_samples[s] = static_cast<float>(cells[c]->video_memory(frame).pixel_samples[k]);
+      out.pixel_samples[s] = static_cast<float>(video[c]->pixel_samples[k]);
     });
   }
   return out;
@@ -98,8 +99,7 @@ FrameScreen compose_frame(const WindowLayout& layout, const std::vector<std::uni
 // and every unit within a cell's memory and video memory. Returns what a cell
 // holds for each unit.
 std::vector<UnitMemory> check_frames(const std::vector<FrameWork>& frames, MachineConfig& config) {
-  if (config.frame_average && config.mode != PixelMode::Dot)
-    throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
+  check_balance(config);
   if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
   std::vector<SceneFootprint> footprints;
   for (const FrameWork& f : frames) footprints.push_back(f.footprint);
@@ -169,7 +169,7 @@ MachineParts::MachineParts(std::vector<FrameWork>& frames_in, std::vector<Distri
       host_track(timeline.add_track("host")),
       bus_track(timeline.add_track("command bus")),
       host({kernel, bus, timeline, frames, units, [this](std::size_t u) { unit_begins(u); },
-            [this](std::size_t u) { unit_ends(u); }},
+            [this](std::size_t u) { unit_ends(u); }, config.balance.on_demand()},
            host_track, grid.cell_count(), config.profile.program_bytes) {
   cells.reserve(grid.cell_count());
   for (CellId id = 0; id < grid.cell_count(); ++id) {
@@ -177,7 +177,8 @@ MachineParts::MachineParts(std::vector<FrameWork>& frames_in, std::vector<Distri
     const int track = timeline.add_track(fmt::format("cell[{},{}]", p.row, p.col));
     cells.push_back(std::make_unique<Cell>(
         id, track,
-        Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased, config.keep_received_corners}));
+        Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased, config.keep_received_corners,
+                     config.balance.on_demand()}));
   }
   bus.on_delivery([this](const BusTransfer& t) {
     if (t.receiver == kAllCells) {
@@ -215,6 +216,11 @@ void record_traffic(MachineParts& m, SimulationResult& result) {
     ++result.bus.transfers;
     result.bus.bytes += t.bytes;
     result.bus.busy += t.released - t.granted;
+    if (t.message == BusMessage::Request || t.message == BusMessage::Grant || t.message == BusMessage::NoTile) {
+      ++result.balance_bus.transfers;
+      result.balance_bus.bytes += t.bytes;
+      result.balance_bus.busy += t.released - t.granted;
+    }
   }
   std::vector<int> link_tracks(static_cast<std::size_t>(m.grid.cell_count()) * 4, -1);
   for (const LinkTraffic& t : m.links.traffic()) {
@@ -270,15 +276,99 @@ void record_cells(const MachineParts& m, const CostBreakdown& host_work, Simulat
   }
 }
 
-// Every frame as the video bus showed it.
+// Balanced on demand: which cell traced each tile, and when it began; every
+// tile exactly once.
+struct TileOwners {
+  std::vector<std::vector<CellId>> cell;  // per frame, per tile
+  std::vector<std::vector<Cycles>> start;
+};
+TileOwners tile_owners(const MachineParts& m) {
+  TileOwners out;
+  for (const FrameWork& f : m.frames) {
+    out.cell.emplace_back(f.layout.grid().cell_count(), -1);
+    out.start.emplace_back(f.layout.grid().cell_count());
+  }
+  for (const auto& cell : m.cells)
+    for (const TileRun& t : cell->record().tiles) {
+      CellId& owner = out.cell.at(t.frame).at(t.tile);
+      if (owner >= 0) throw std::logic_error(fmt::format("tile {} of frame {} was traced twice", t.tile, t.frame));
+      owner = cell->id();
+      out.start[t.frame][t.tile] = t.start;
+    }
+  for (std::size_t f = 0; f < out.cell.size(); ++f)
+    for (std::size_t t = 0; t < out.cell[f].size(); ++t)
+      if (out.cell[f][t] < 0) throw std::logic_error(fmt::format("tile {} of frame {} was never traced", t, f));
+  return out;
+}
+
+// On demand a cell's video memory holds the tiles it traced of the unit's
+// frame, which only the run decides: the most any cell took, checked here
+// against the profile (before any output is written).
+void check_tile_video_memory(const MachineParts& m, const MachineConfig& config, SimulationResult& result) {
+  const CostProfile& profile = config.profile;
+  for (UnitTimes& unit : result.units) {
+    std::uint64_t most = 0;
+    for (const auto& cell : m.cells) {
+      std::uint64_t pixels = 0;
+      for (const TileRun& t : cell->record().tiles)
+        if (t.frame == unit.first_frame)
+          pixels += static_cast<std::uint64_t>(m.frames[t.frame].layout.window(t.tile).pixel_count());
+      const std::uint64_t bytes = pixels * kVideoPixelBytes;
+      if (bytes > profile.video_memory_bytes)
+        throw std::runtime_error(fmt::format(
+            "frame {}: {} traced {} pixels of tiles, which need {} B of video memory; the profile gives {} B: "
+            "more --cells or a smaller --size can help",
+            unit.first_frame, sender_name(cell->id(), m.grid), pixels, bytes, profile.video_memory_bytes));
+      most = std::max(most, bytes);
+    }
+    unit.video_memory_bytes = most;
+  }
+}
+
+// Every frame as the video bus showed it: the cells' windows, or on demand
+// the tiles where their cells' window controllers put them.
 void compose_screens(const MachineParts& m, const MachineConfig& config, SimulationResult& result) {
   result.width = m.frames[0].layout.width();
   result.height = m.frames[0].layout.height();
-  for (std::size_t f = 0; f < m.frames.size(); ++f)
-    result.screens.push_back(compose_frame(m.frames[f].layout, m.cells, static_cast<int>(f), config));
+  if (config.balance.on_demand()) {
+    TileOwners owners = tile_owners(m);
+    for (std::size_t f = 0; f < m.frames.size(); ++f) {
+      std::vector<const TracedCell*> video;
+      std::vector<Cycles> write_start;
+      for (std::size_t t = 0; t < m.frames[f].cells.size(); ++t) {
+        const TracedCell& tile = m.frames[f].cells[t];
+        video.push_back(&tile);
+        // Antialiased, a tile's pixels are written as it subdivides them,
+        // after tracing its corners.
+        write_start.push_back(owners.start[f][t] + tile.corner_work.total());
+      }
+      result.screens.push_back(compose_frame(m.frames[f].layout, video, write_start, config));
+    }
+    result.tile_cells = std::move(owners.cell);
+    return;
+  }
+  for (std::size_t f = 0; f < m.frames.size(); ++f) {
+    std::vector<const TracedCell*> video;
+    std::vector<Cycles> write_start;
+    for (const auto& cell : m.cells) {
+      video.push_back(&cell->video_memory(static_cast<int>(f)));
+      write_start.push_back(cell->record().frame_write_start.at(f));
+    }
+    result.screens.push_back(compose_frame(m.frames[f].layout, video, write_start, config));
+  }
 }
 
 }  // namespace
+
+void check_balance(const MachineConfig& config) {
+  if (config.frame_average && config.mode != PixelMode::Dot)
+    throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
+  if (!config.balance.on_demand()) return;
+  if (config.balance.tile_side() < 1)
+    throw std::invalid_argument(fmt::format("a tile of {} pixels is not a square", config.balance.tile_pixels));
+  if (config.frame_average)
+    throw std::invalid_argument("balancing on demand hands out tiles of one frame at a time: no frame averaging");
+}
 
 // Plan the units, wire the parts, run their programs, collect what they
 // recorded.
@@ -297,6 +387,10 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   record_traffic(machine, result);
   record_units(machine, memory, result);
   record_cells(machine, host_work, result);
+  if (config.balance.on_demand()) {
+    check_tile_video_memory(machine, config, result);
+    result.balancing = machine.host.balancing();
+  }
   compose_screens(machine, config, result);
   return result;
 }

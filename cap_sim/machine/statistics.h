@@ -20,8 +20,14 @@ enum class StatisticUnit {
   Cycles,  // of the profile's clock; JSON "<name>_cycles"; seconds where a table says so
 };
 
-// When a statistic is kept: always, or only when the run antialiases.
-enum class StatisticScope { Always, Antialiased };
+// When a statistic is kept: always, only when the run antialiases, or only
+// when it is balanced on demand.
+enum class StatisticScope { Always, Antialiased, Demand };
+
+constexpr bool statistic_kept(StatisticScope scope, bool antialiased, bool on_demand) {
+  return scope == StatisticScope::Always || (scope == StatisticScope::Antialiased && antialiased) ||
+         (scope == StatisticScope::Demand && on_demand);
+}
 
 template <class Part>
 struct Statistic {
@@ -37,7 +43,7 @@ struct Statistic {
   std::string json_key() const { return unit == StatisticUnit::Cycles ? std::string(name) + "_cycles" : name; }
 };
 
-inline constexpr std::array<Statistic<CellReport>, 10> kCellStatistics = {{
+inline constexpr std::array<Statistic<CellReport>, 16> kCellStatistics = {{
     {"pixels", StatisticUnit::Count, StatisticScope::Always, "pixels it traced, all frames", "pixels", 8,
      "Pixels", [](const CellReport& c) { return c.pixels; }},
     {"rays", StatisticUnit::Count, StatisticScope::Always, "rays it traced, every kind", "rays", 9, "Rays",
@@ -62,6 +68,19 @@ inline constexpr std::array<Statistic<CellReport>, 10> kCellStatistics = {{
     {"corners_received", StatisticUnit::Count, StatisticScope::Antialiased,
      "corner samples it took in over the links", "corners in", 9, "Corners in",
      [](const CellReport& c) { return c.corners_received; }},
+    {"tiles", StatisticUnit::Count, StatisticScope::Demand, "tiles it was granted and traced", "tiles", 7, "Tiles",
+     [](const CellReport& c) { return static_cast<std::uint64_t>(c.tiles.size()); }},
+    {"requests", StatisticUnit::Count, StatisticScope::Demand, "requests for a tile it sent the host", "requests", 9,
+     "Requests", [](const CellReport& c) { return c.tile_requests; }},
+    {"waits", StatisticUnit::Count, StatisticScope::Demand, "times it waited for the host's answer with nothing to trace",
+     "tile waits", 10, "Waits", [](const CellReport& c) { return c.tile_waits; }},
+    {"tile_wait", StatisticUnit::Cycles, StatisticScope::Demand, "those waits, summed", "tile wait cyc", 14,
+     "Tile wait", [](const CellReport& c) { return c.tile_wait.count(); }},
+    {"longest_tile_wait", StatisticUnit::Cycles, StatisticScope::Demand, "the longest of those waits",
+     "max tile wait cyc", 17, "Longest tile wait", [](const CellReport& c) { return c.longest_tile_wait.count(); }},
+    {"balance_bytes", StatisticUnit::Bytes, StatisticScope::Demand,
+     "balancing bytes on the bus: its requests sent, the grants and \"no tile\" it took in", "balance B", 10,
+     "Balance bytes", [](const CellReport& c) { return c.balance_bytes_sent + c.balance_bytes_received; }},
 }};
 
 inline constexpr std::array<Statistic<LinkTraffic>, 4> kLinkStatistics = {{

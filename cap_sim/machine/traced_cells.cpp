@@ -123,7 +123,8 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
 std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const WindowLayout& layout,
                                                 const CostTable& costs, int threads,
                                                 Progress* progress, const AntialiasOptions& aa,
-                                                ScreenFormat format, bool keep_write_cycles) {
+                                                ScreenFormat format, bool keep_write_cycles,
+                                                CornerTracing tracing) {
   const int cell_count = layout.grid().cell_count();
   const int width = layout.width(), height = layout.height();
   const bool floats = format == ScreenFormat::Float;
@@ -143,9 +144,26 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
       tracer, threads,
       [&](int x, int y, const OpCounts& ops) {
         Sums& sum = corner_sums.local();
-        const CellId c = owner(x, y).cell;
-        sum.ops[c] += ops;
-        ++sum.items[c];
+        if (tracing == CornerTracing::ByOwner) {
+          const CellId c = owner(x, y).cell;
+          sum.ops[c] += ops;
+          ++sum.items[c];
+        } else {
+          // Corner (x, y) is a corner of pixels (x - 1 .. x, y - 1 .. y):
+          // each distinct window among theirs traces it.
+          CellId needers[4];
+          int count = 0;
+          for (int py = y - 1; py <= y; ++py)
+            for (int px = x - 1; px <= x; ++px) {
+              if (px < 0 || py < 0 || px >= width || py >= height) continue;
+              const CellId c = owners.owner(px, py).cell;
+              if (std::find(needers, needers + count, c) == needers + count) needers[count++] = c;
+            }
+          for (int i = 0; i < count; ++i) {
+            sum.ops[needers[i]] += ops;
+            ++sum.items[needers[i]];
+          }
+        }
         if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = saturated_cycles(ops, costs);
       },
       progress);
@@ -211,9 +229,11 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
 
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CostTable& costs, int threads, Progress* progress,
-                                    const AntialiasOptions& aa, ScreenFormat format, bool keep_write_cycles) {
+                                    const AntialiasOptions& aa, ScreenFormat format, bool keep_write_cycles,
+                                    CornerTracing corners) {
   if (aa.depth > 0)
-    return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format, keep_write_cycles);
+    return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format, keep_write_cycles,
+                                   corners);
   const int cell_count = layout.grid().cell_count();
   const bool floats = format == ScreenFormat::Float;
   std::vector<TracedCell> cells = empty_cells(layout, format, false, keep_write_cycles);

@@ -36,7 +36,7 @@ struct TracedCell {
   std::uint64_t rays = 0;
   OpCounts ops;  // the operations work charges for (rays = ops.rays)
   // Antialiasing only.
-  CostBreakdown corner_work;               // phase 1: tracing the corners it owns
+  CostBreakdown corner_work;               // phase 1: tracing its corners (CornerTracing)
   CostBreakdown subdivision_work;          // phase 3: its pixels' subdivision
   std::vector<std::uint32_t> pixel_samples;  // primary samples traced per pixel (Float)
   // Kept only when asked (trace_cells' keep_write_cycles), in either format: per
@@ -46,12 +46,19 @@ struct TracedCell {
   std::vector<std::uint64_t> write_cycles;
 };
 
+// Antialiased, who traces a corner sample (phase 1): the window that owns it
+// (its pixel's, corner_pixel), which the others get it from over the links;
+// or every window with a pixel it is a corner of, each tracing it on its own
+// (a tile balanced on demand, which has no neighbour to take it from).
+enum class CornerTracing { ByOwner, ByEveryWindowThatNeedsIt };
+
 // One entry per cell of the layout. threads: 0 = all hardware threads.
 // progress may be null; it advances by render_work(width, height, aa).
 // keep_write_cycles: fill TracedCell::write_cycles.
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CostTable& costs, int threads, Progress* progress,
                                     const AntialiasOptions& aa = {},
-                                    ScreenFormat format = ScreenFormat::Float, bool keep_write_cycles = false);
+                                    ScreenFormat format = ScreenFormat::Float, bool keep_write_cycles = false,
+                                    CornerTracing corners = CornerTracing::ByOwner);
 
 }  // namespace capsim::sim

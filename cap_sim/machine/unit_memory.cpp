@@ -49,6 +49,10 @@ class VideoByShift {
   const std::vector<std::uint64_t>& of(int k) {
     if (static_cast<std::size_t>(k) >= memo_.size()) memo_.resize(static_cast<std::size_t>(k) + 1);
     std::vector<std::uint64_t>& bytes = memo_[k];
+    // On demand the run decides which tiles a cell's video memory holds: it is
+    // checked once the run has handed them out (run_frames).
+    if (bytes.empty() && config_.balance.on_demand())
+      bytes.assign(static_cast<std::size_t>(config_.cells.cell_count()), 0);
     if (bytes.empty()) {
       const DotShift shift = config_.frame_average ? dot_shift_for_frame(config_.cells, k) : DotShift{};
       bytes = frame_video_memory(WindowLayout(config_.mode, config_.cells, width_, height_, shift),

@@ -7,7 +7,9 @@
 //     averaged, the host broadcasts all of a group's frames before "start";
 //   in its video memory (video_memory_bytes): its pixels of every frame of the
 //     unit, kVideoPixelBytes each, and, antialiased, the corner samples it
-//     traced and those it took in from other cells, kScreenSampleBytes each.
+//     traced and those it took in from other cells, kScreenSampleBytes each;
+//     balanced on demand, the pixels of the tiles it was granted, which only
+//     the run decides, and which run_frames checks once it has.
 // Frame averaged, frames_per_unit decides from both how many frames a unit
 // holds.
 

@@ -25,7 +25,9 @@ std::string simulate_command(const SimulateSettings& s, CommandForm form) {
   // and docs/reproduction.md have always given it.
   if (!every && s.primary_only) cmd += " --primary-only";
   if (every || !(s.cells == defaults.cells)) cmd += " --cells " + to_string(s.cells);
-  if (every || s.mode != defaults.mode) cmd += fmt::format(" --mode {}", to_string(s.mode));
+  // On demand the tiles decide what a cell shows: --mode is refused there.
+  if (!s.balance.on_demand() && (every || s.mode != defaults.mode))
+    cmd += fmt::format(" --mode {}", to_string(s.mode));
   if (every || s.profile != defaults.profile) cmd += " --profile " + s.profile;
   if (s.frames > 0) cmd += fmt::format(" --frames {}", s.frames);
   if (every && s.primary_only) cmd += " --primary-only";
@@ -34,6 +36,7 @@ std::string simulate_command(const SimulateSettings& s, CommandForm form) {
     if (every || s.aa.threshold != defaults.aa.threshold) cmd += fmt::format(" --aa-threshold {}", s.aa.threshold);
   }
   if (s.frame_average) cmd += " --frame-average";
+  if (s.balance.on_demand()) cmd += " --balance " + to_string(s.balance);
   if (every || s.threads != defaults.threads) cmd += fmt::format(" --threads {}", s.threads);
   for (const std::string& d : s.defines) cmd += " -D " + single_quoted(d);
   return cmd;

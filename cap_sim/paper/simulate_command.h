@@ -5,6 +5,7 @@
 // differ from the defaults, and a sweep can print its points the same way.
 
 #include "capsim/antialias.h"
+#include "machine/balance.h"
 #include "machine/cell_grid.h"
 #include "machine/window_controller.h"
 
@@ -26,6 +27,7 @@ struct SimulateSettings {
   bool primary_only = false;
   AntialiasOptions aa;  // --aa and --aa-threshold
   bool frame_average = false;
+  BalanceOptions balance;  // --balance, written only when not static
   int threads = 0;  // host threads; 0 = all hardware threads
   std::vector<std::string> defines;  // -D var=value for .scad input, in order
 };
@@ -39,7 +41,8 @@ enum class CommandForm {
 // settings give one, --frames when given, each flag that is set and, with
 // antialiasing, its depth and threshold (the threshold in NonDefaults only if
 // not the default), each -D in single quotes as a shell takes it verbatim;
-// the other options as `form` asks.
+// the other options as `form` asks; on demand (--balance demand:TILE) no
+// --mode, which demand refuses.
 std::string simulate_command(const SimulateSettings& settings, CommandForm form);
 
 }  // namespace capsim::sim

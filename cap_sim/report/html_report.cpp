@@ -204,7 +204,9 @@ std::string cell_table(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   const bool aa = r.config.aa.depth > 0;
   // Every cell statistic the run kept, cycles shown in seconds.
-  auto kept = [&](const Statistic<CellReport>& s) { return s.scope == StatisticScope::Always || aa; };
+  auto kept = [&](const Statistic<CellReport>& s) {
+    return statistic_kept(s.scope, aa, r.config.balance.on_demand());
+  };
   std::string head = "<th data-key=\"cell\">Cell</th><th data-key=\"row\">Row</th><th data-key=\"col\">Col</th>";
   for (const auto& s : kCellStatistics)
     if (kept(s))
@@ -284,9 +286,8 @@ std::string antialiasing_section(const SimulationResult& r) {
     links += "</tr>\n";
   }
   return fmt::format(
-      "<section id=\"antialiasing\">\n<h2>Antialiasing</h2>\n<p>Depth {}, threshold {}: each cell traces the "
-      "corners it owns, exchanges corners with its neighbours over the {} links (a vertical step, then a "
-      "horizontal one that relays) and subdivides its pixels; the table of cells gives each phase.</p>\n"
+      "<section id=\"antialiasing\">\n<h2>Antialiasing</h2>\n<p>Depth {}, threshold {}: {}; the table of cells "
+      "gives each phase.</p>\n"
       "<table id=\"link-totals\" class=\"facts\">\n<caption>Link traffic</caption>\n"
       "<tr><th>Messages</th><td>{}</td></tr>\n<tr><th>Bytes</th><td>{}</td></tr>\n"
       "<tr><th>Hops</th><td>{} (at most {} for one message)</td></tr>\n"
@@ -297,9 +298,37 @@ std::string antialiasing_section(const SimulationResult& r) {
       "<table id=\"link-table\" class=\"numbers\">\n<thead><tr><th>Row</th><th>Col</th><th>Direction</th>"
       "{}</tr></thead>\n<tbody>\n{}"
       "</tbody>\n</table></div>\n</details>\n</section>\n",
-      r.config.aa.depth, r.config.aa.threshold, to_string(r.config.profile.link.topology), grouped(t.messages),
+      r.config.aa.depth, r.config.aa.threshold,
+      r.config.balance.on_demand()
+          ? std::string("each tile traces every corner of its pixels (those on its border again where a "
+                        "neighbouring tile does too) and subdivides its pixels, so no corner crosses the links")
+          : fmt::format("each cell traces the corners it owns, exchanges corners with its neighbours over the {} "
+                        "links (a vertical step, then a horizontal one that relays) and subdivides its pixels",
+                        to_string(r.config.profile.link.topology)),
+      grouped(t.messages),
       grouped(t.bytes), grouped(t.hops), t.max_hops, grouped(t.busiest.count()), t.busiest.seconds(hz),
       grouped(t.longest_wait.count()), r.links.size(), link_heads, links);
+}
+
+// Balanced on demand: how the tiles were handed out, the bus traffic that
+// cost, and the map of which cell traced each tile (drawn by the script from
+// the report's balancing.tile_cells).
+std::string balancing_section(const SimulationResult& r) {
+  const std::uint64_t hz = r.config.profile.clock_hz;
+  const Host::Balancing& h = r.balancing;
+  return fmt::format(
+      "<section id=\"balancing\">\n<h2>Balancing on demand</h2>\n<p>The host hands out tiles of at most {0}x{0} "
+      "pixels, in order, to the cells that ask over the command bus; each cell asks for its next tile as the one "
+      "it traces nears its end (docs/balancing.md). The table of cells gives each cell's tiles, requests and "
+      "waits.</p>\n<table id=\"balance-totals\" class=\"facts\">\n<caption>Balancing traffic</caption>\n"
+      "<tr><th>Requests</th><td>{1} ({2} B)</td></tr>\n<tr><th>Grants</th><td>{3}</td></tr>\n"
+      "<tr><th>&ldquo;No tile&rdquo; answers</th><td>{4}</td></tr>\n"
+      "<tr><th>Bus held for balancing</th><td>{5} transfers, {6} B, {7} cycles ({8:.4f} s), {9:.3f} % of the "
+      "run</td></tr>\n</table>\n<p class=\"note\">Which cell traced each tile, one colour a cell; hover for the "
+      "tile and its cell.</p>\n<div id=\"tile-map\" class=\"tile-map\"></div>\n</section>\n",
+      r.config.balance.tile_side(), grouped(h.requests), grouped(h.bytes_received), grouped(h.grants),
+      grouped(h.refusals), grouped(r.balance_bus.transfers), grouped(r.balance_bus.bytes),
+      grouped(r.balance_bus.busy.count()), r.balance_bus.busy.seconds(hz), balance_bus_percent(r));
 }
 
 std::string sequence_section(const SimulationResult& r) {
@@ -340,13 +369,15 @@ std::string sequence_section(const SimulationResult& r) {
 
 // The data the page's script reads beside the report and the trace: each
 // frame's windows ([origin_x, origin_y, columns, rows, stride_x, stride_y] per
-// cell in id order) and its packed completion cycles in base64.
+// cell in id order; on demand, per tile in tile order, with window_cells
+// naming the cell that traced each) and its packed completion cycles in
+// base64.
 std::string page_data(const SimulationResult& r) {
   nlohmann::json frames = nlohmann::json::array();
   for (std::size_t f = 0; f < r.screens.size(); ++f) {
     const WindowLayout layout = frame_layout(r.config, r.width, r.height, static_cast<int>(f));
     nlohmann::json windows = nlohmann::json::array();
-    for (CellId c = 0; c < r.config.cells.cell_count(); ++c) {
+    for (CellId c = 0; c < layout.grid().cell_count(); ++c) {
       const CellWindow& w = layout.window(c);
       windows.push_back({w.origin_x(), w.origin_y(), w.columns(), w.rows(), w.stride_x(), w.stride_y()});
     }
@@ -360,6 +391,7 @@ std::string page_data(const SimulationResult& r) {
     frames.push_back({{"windows", windows},
                       {"start_cycles", r.units.at(unit).start.count()},
                       {"completion", base64(packed)}});
+    if (r.config.balance.on_demand()) frames.back()["window_cells"] = r.tile_cells.at(f);
   }
   return nlohmann::json{{"frames", frames}}.dump();
 }
@@ -386,6 +418,7 @@ std::string html_report(const SimulationResult& r, const RunFacts& facts) {
   std::string body = header_section(r, facts) + "<main>\n" + run_section(r, facts) + screen_section(r) +
                      cells_section(r) + timeline_section() + breakdown_section(r);
   if (r.config.aa.depth > 0) body += antialiasing_section(r);
+  if (r.config.balance.on_demand()) body += balancing_section(r);
   if (r.screens.size() > 1) body += sequence_section(r);
   body += fmt::format(
       "</main>\n<footer>Written by capsim {}. The --report JSON and the --trace JSON of this run are in this file, "
@@ -395,8 +428,10 @@ std::string html_report(const SimulationResult& r, const RunFacts& facts) {
   body += data_block("trace-data", chrome_trace_text(r));
   body += data_block("page-data", page_data(r));
 
-  const std::string title = fmt::format("capsim: {}, {} cells, {} mode", run_name(facts.scenes, r.screens.size()),
-                                        to_string(r.config.cells), to_string(r.config.mode));
+  const std::string sharing = r.config.balance.on_demand() ? "balanced " + to_string(r.config.balance)
+                                                           : fmt::format("{} mode", to_string(r.config.mode));
+  const std::string title = fmt::format("capsim: {}, {} cells, {}", run_name(facts.scenes, r.screens.size()),
+                                        to_string(r.config.cells), sharing);
   const HtmlAssets& assets = html_assets();
   const std::string escaped_title = html_escape(title);
   return fill_template(assets.page,

@@ -101,9 +101,27 @@ std::string cell_table(const SimulationResult& r, StatisticScope scope, bool sec
 }
 
 std::string header_line(const SimulationResult& r) {
-  return fmt::format("CAP simulation: {} cells, {} mode, profile {} ({} Hz), {}x{} pixels\n",
-                     to_string(r.config.cells), to_string(r.config.mode), r.config.profile.name,
-                     r.config.profile.clock_hz, r.width, r.height);
+  const std::string sharing = r.config.balance.on_demand()
+                                  ? fmt::format("balanced on demand in tiles of {} pixels", r.config.balance.tile_pixels)
+                                  : fmt::format("{} mode", to_string(r.config.mode));
+  return fmt::format("CAP simulation: {} cells, {}, profile {} ({} Hz), {}x{} pixels\n", to_string(r.config.cells),
+                     sharing, r.config.profile.name, r.config.profile.clock_hz, r.width, r.height);
+}
+
+std::string format_balancing(const SimulationResult& r) {
+  const std::uint64_t hz = r.config.profile.clock_hz;
+  const int side = r.config.balance.tile_side();
+  std::size_t tiles = 0;
+  for (const auto& frame : r.tile_cells) tiles += frame.size();
+  std::string out = fmt::format("\nbalanced on demand: {} tiles of at most {}x{} pixels\n", tiles, side, side);
+  out += cell_table(r, StatisticScope::Demand, false);
+  const Host::Balancing& h = r.balancing;
+  out += fmt::format(
+      "host: {} requests ({} B) answered with {} grants and {} \"no tile\" ({} B)\n"
+      "bus for balancing: {} transfers, {} B, busy {} cycles ({:.3f} s), {:.3f} % of the run's time\n",
+      h.requests, h.bytes_received, h.grants, h.refusals, h.bytes_sent, r.balance_bus.transfers,
+      r.balance_bus.bytes, r.balance_bus.busy.count(), r.balance_bus.busy.seconds(hz), balance_bus_percent(r));
+  return out;
 }
 
 // Max, Min and d over the finish times, the same over busy time, and the
@@ -168,6 +186,7 @@ std::string format_report(const SimulationResult& r, const Provenance* provenanc
   }
   out += fmt::format("  {:<22} {:>14.3f} s\n", "total", total);
   if (r.config.aa.depth > 0) out += format_antialiasing(r);
+  if (r.config.balance.on_demand()) out += format_balancing(r);
   if (r.screens.size() > 1) out += format_sequence(r);
   if (provenance) out += provenance_text(*provenance);
   return out;
@@ -199,6 +218,26 @@ void add_antialiasing(nlohmann::json& report, const SimulationResult& r) {
                            {"max_hops", t.max_hops},
                            {"busiest_link_cycles", t.busiest.count()},
                            {"longest_wait_cycles", t.longest_wait.count()}};
+}
+
+void add_balancing(nlohmann::json& report, const SimulationResult& r) {
+  for (std::size_t i = 0; i < r.cells.size(); ++i)
+    for (const auto& s : kCellStatistics)
+      if (s.scope == StatisticScope::Demand) report["cells"][i][s.json_key()] = s.value(r.cells[i]);
+  const Host::Balancing& h = r.balancing;
+  report["balancing"] = {{"scheme", "demand"},
+                         {"tile_pixels", r.config.balance.tile_pixels},
+                         {"tile_side", r.config.balance.tile_side()},
+                         {"tile_cells", r.tile_cells},
+                         {"host", {{"requests", h.requests},
+                                   {"grants", h.grants},
+                                   {"no_tile", h.refusals},
+                                   {"bytes_received", h.bytes_received},
+                                   {"bytes_sent", h.bytes_sent}}},
+                         {"bus", {{"transfers", r.balance_bus.transfers},
+                                  {"bytes", r.balance_bus.bytes},
+                                  {"busy_cycles", r.balance_bus.busy.count()},
+                                  {"occupancy_percent", balance_bus_percent(r)}}}};
 }
 
 void add_sequence(nlohmann::json& report, const SimulationResult& r) {
@@ -299,6 +338,7 @@ nlohmann::json report_json(const SimulationResult& r, const Provenance* provenan
           {"breakdown_cycles", breakdown_cycles},
           {"total_cycles", r.frame.count()}};
   if (r.config.aa.depth > 0) add_antialiasing(report, r);
+  if (r.config.balance.on_demand()) add_balancing(report, r);
   if (r.screens.size() > 1) add_sequence(report, r);
   if (provenance) report["provenance"] = provenance_json(*provenance);
   return report;

@@ -34,6 +34,7 @@ struct SimulateOptions {
   OptionText<> cells{"8x8"};
   OptionText<> mode{"dot"};
   OptionText<> profile{"cap"};
+  OptionText<> balance{"static"};
   std::string report;    // JSON report path; empty = none
   std::string trace;     // Chrome trace-event JSON path; empty = none
   OptionText<> heatmap;  // PNG path; empty = none
@@ -58,6 +59,7 @@ sim::SimulateSettings run_settings(const TracerSettings& t, const sim::MachineCo
   s.primary_only = t.trace.primary_only;
   s.aa = t.aa;
   s.frame_average = config.frame_average;
+  s.balance = config.balance;
   s.threads = t.threads;
   s.defines = t.defines;
   return s;
@@ -111,6 +113,9 @@ sim::Provenance run_provenance(const std::vector<std::string>& argv, const Trace
                {"view_statement", scenes.empty() ? json() : json(camera_statement(scenes.front().camera))},
                {"verbose", t.verbose},
                {"quiet", o.quiet}};
+  // Only a run that is not static records it, so that a static run's reports
+  // stay as they were before balancing could be chosen.
+  if (config.balance.on_demand()) p.options["balance"] = sim::to_string(config.balance);
   return p;
 }
 
@@ -148,6 +153,17 @@ sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
   checked(o.profile);
   if (!o.heatmap.text.empty()) checked(o.heatmap);
   config.frame_average = o.frame_average;
+  config.balance = sim::parse_balance(checked(o.balance));
+  if (config.balance.on_demand()) {
+    if (o.mode.option->count() > 0)
+      throw UsageError(fmt::format("--balance {} hands out tiles, which the window controllers show where the host "
+                                   "says: it takes no --mode",
+                                   o.balance.text));
+    if (o.frame_average)
+      throw UsageError(fmt::format("--balance {} hands out the tiles of one frame at a time: it cannot be "
+                                   "frame averaged (--frame-average)",
+                                   o.balance.text));
+  }
   if (o.frame_average && config.mode != sim::PixelMode::Dot)
     throw UsageError(fmt::format("--frame-average turns the dot pattern from frame to frame: it needs --mode dot, "
                                  "not {}",
@@ -184,6 +200,24 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
                       "is neither a built-in profile nor a readable file")
                  .description("cap, m380 or a profile JSON file as docs/simulation.md describes"))
       ->default_val("cap");
+  add_option(*cmd, "--balance", sim->balance,
+             "Load balancing: static (each cell traces what its window shows, the paper's) or demand[:TILE] (the "
+             "host hands out square tiles of TILE pixels, 64 by default, to the cells that ask over the command "
+             "bus; docs/balancing.md)",
+             satisfying(
+                 [](const std::string& text) {
+                   try {
+                     (void)sim::parse_balance(text);
+                     return true;
+                   } catch (const std::invalid_argument&) {
+                     return false;
+                   }
+                 },
+                 "is not a balance scheme")
+                 .description(fmt::format("static, demand or demand:TILE, TILE a square number of pixels from 1 to "
+                                          "{} (e.g. demand:64)",
+                                          sim::kMaxTilePixels)))
+      ->default_val("static");
   accepts(cmd->add_option("--report", sim->report, "Write the report as JSON to this file"),
           CLI::Validator("a file path"));
   accepts(cmd->add_option("--trace", sim->trace,

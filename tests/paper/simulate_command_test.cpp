@@ -47,6 +47,19 @@ TEST(SimulateCommand, EveryOptionGivesTheDefaultsToo) {
             "--aa 1 --aa-threshold 0.3 --threads 0");
 }
 
+// On demand --balance is given and --mode, which it refuses, is not; a static
+// run gives no --balance, as before it could be chosen.
+TEST(SimulateCommand, DemandGivesItsTilesAndNoMode) {
+  SimulateSettings s = one_scene();
+  s.balance = {BalanceScheme::Demand, 16};
+  EXPECT_EQ(simulate_command(s, CommandForm::EveryOption),
+            "capsim simulate scenes/balls.csg -o s.png --grid auto --cells 8x8 --profile cap --balance demand:16 "
+            "--threads 0");
+  s.mode = PixelMode::Line;
+  EXPECT_EQ(simulate_command(s, CommandForm::NonDefaults),
+            "capsim simulate scenes/balls.csg -o s.png --balance demand:16");
+}
+
 TEST(SimulateCommand, NonDefaultsLeavesTheDefaultsOut) {
   EXPECT_EQ(simulate_command(one_scene(), CommandForm::NonDefaults), "capsim simulate scenes/balls.csg -o s.png");
   SimulateSettings s = one_scene();

@@ -106,7 +106,7 @@ TEST(HtmlReportInBrowser, ScriptBuildsThePlayerHeatMapTableAndTimelineFromTheRun
   const auto page = data_attributes(dom, "player");  // id="player" is on the <div>; the root has data-built
   const std::size_t root = dom.find("<html");
   const std::string html_tag = dom.substr(root, dom.find('>', root) - root);
-  EXPECT_NE(html_tag.find("data-built=\"player completion cellMap table timeline frameChart linkMap save\""),
+  EXPECT_NE(html_tag.find("data-built=\"player completion cellMap table timeline frameChart linkMap tileMap save\""),
             std::string::npos)
       << html_tag;
   EXPECT_EQ(html_tag.find("data-failed"), std::string::npos) << html_tag;
@@ -210,6 +210,27 @@ TEST(HtmlReportInBrowser, SequenceWithAntialiasingGetsItsFramesChartLinkMapAndFr
   EXPECT_EQ(number(links, "links"), r.links.size());
   EXPECT_EQ(number(links, "bytes"), link_totals(r).bytes);
   EXPECT_GT(r.links.size(), 0u);
+}
+
+// Balanced on demand, the tile map shows which cell traced each tile of the
+// frame chosen: as many tiles as the run had, traced by every cell.
+TEST(HtmlReportInBrowser, DemandRunGetsItsTileMap) {
+  const std::string chromium = find_chromium();
+  SKIP_WITHOUT_CHROMIUM(chromium);
+  TempDir dir;
+  const PreparedScene scene = balls(40, 30);
+  const Tracer tracer(scene, TraceOptions{});
+  MachineConfig config = config_of({2, 3}, PixelMode::Dot, 0);
+  config.balance = {BalanceScheme::Demand, 16};
+  const SimulationResult r = simulate_frame(tracer, config, 2, false);
+  write(dir / "demand.html", html_report(r, kFacts));
+  const std::string dom = dump_dom(chromium, dir, dir / "demand.html", "");
+  const auto tiles = data_attributes(dom, "tile-map");
+  ASSERT_FALSE(tiles.empty()) << "no tile map in the DOM";
+  EXPECT_EQ(number(tiles, "tiles"), 80u);
+  EXPECT_EQ(number(tiles, "cells"), 6u);
+  EXPECT_EQ(number(tiles, "frame"), 0u);
+  EXPECT_EQ(dom.find("data-failed"), std::string::npos);
 }
 
 }  // namespace

@@ -225,7 +225,10 @@ TEST(HtmlReport, EssentialsArePlainHtml) {
   const SimulationResult plain = simulate_frame(tracer, config_of({3, 4}, PixelMode::Block), 2, false);
   const SimulationResult aa = simulate_frame(tracer, config_of({2, 3}, PixelMode::Dot, 1), 2, false);
   const SimulationResult sequence = sequence_run();
-  for (const SimulationResult* r : {&plain, &aa, &sequence}) {
+  MachineConfig demand_config = config_of({2, 2}, PixelMode::Dot);
+  demand_config.balance = {BalanceScheme::Demand, 16};
+  const SimulationResult demand = simulate_frame(tracer, demand_config, 2, false);
+  for (const SimulationResult* r : {&plain, &aa, &sequence, &demand}) {
     const std::string page = html_report(*r, kFacts);
     const std::uint64_t hz = r->config.profile.clock_hz;
     // Outside the data blocks and the script: what a browser without
@@ -245,7 +248,12 @@ TEST(HtmlReport, EssentialsArePlainHtml) {
     EXPECT_EQ(count(html, "<img id=\"screen-"), r->screens.size());
     EXPECT_EQ(html.find("id=\"antialiasing\"") != std::string::npos, r->config.aa.depth > 0);
     EXPECT_EQ(html.find("id=\"sequence\"") != std::string::npos, r->screens.size() > 1);
+    EXPECT_EQ(html.find("id=\"balancing\"") != std::string::npos, r->config.balance.on_demand());
   }
+  const std::string demand_page = html_report(demand, kFacts);
+  EXPECT_NE(demand_page.find(fmt::format("<tr><th>Grants</th><td>{}</td></tr>", demand.balancing.grants)),
+            std::string::npos);
+  EXPECT_NE(demand_page.find("<div id=\"tile-map\" class=\"tile-map\"></div>"), std::string::npos);
   const std::string aa_page = html_report(aa, kFacts);
   const std::string links = aa_page.substr(aa_page.find("<table id=\"link-table\""));
   EXPECT_EQ(count(links.substr(0, links.find("</table>")), "<tr><td>"), aa.links.size());

@@ -11,13 +11,14 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
 
 namespace capsim::sim {
 namespace {
 
 const RunFacts kFacts{{"balls.csg"}, "capsim simulate balls.csg", 0.5, "0", std::nullopt};
 
-SimulationResult run(int depth) {
+SimulationResult run(int depth, bool on_demand = false) {
   PrepareOptions prep;
   prep.width = 48;
   prep.height = 40;
@@ -28,20 +29,21 @@ SimulationResult run(int depth) {
   config.cells = {2, 3};
   config.profile = load_cost_profile("cap");
   config.aa = {depth, 0.3};
+  if (on_demand) config.balance = {BalanceScheme::Demand, 16};
   config.completion_cycles = true;  // the page needs them
   return simulate_frame(tracer, config, 2, false);
 }
 
 TEST(Statistics, EveryCellStatisticIsInTheJsonTextAndPage) {
-  for (int depth : {0, 1}) {
-    const SimulationResult r = run(depth);
+  for (const auto& [depth, on_demand] : {std::pair{0, false}, std::pair{1, false}, std::pair{0, true}}) {
+    const SimulationResult r = run(depth, on_demand);
     const nlohmann::json json = report_json(r);
     const std::string text = format_report(r);
     const std::string page = html_report(r, kFacts);
     for (const auto& s : kCellStatistics) {
-      const bool kept = s.scope == StatisticScope::Always || depth > 0;
+      const bool kept = statistic_kept(s.scope, depth > 0, on_demand);
       for (std::size_t c = 0; c < r.cells.size(); ++c) {
-        ASSERT_EQ(json["cells"][c].contains(s.json_key()), kept) << s.name << " depth " << depth;
+        ASSERT_EQ(json["cells"][c].contains(s.json_key()), kept) << s.name << " depth " << depth << " " << on_demand;
         if (kept) {
           EXPECT_EQ(json["cells"][c][s.json_key()], s.value(r.cells[c])) << s.name;
         }

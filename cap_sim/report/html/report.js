@@ -62,9 +62,10 @@
   let playerTime = null;
 
   // ---- completion cycles ----
-  // Unpacks a frame's completion cycles (pack_completion_cycles): per cell in
-  // id order, per pixel of its window in video-memory order, the cycles since
-  // the cell's previous pixel as unsigned LEB128. Numbers stay exact up to 2^53.
+  // Unpacks a frame's completion cycles (pack_completion_cycles): per window
+  // in order (a cell's; on demand a tile's, traced by window_cells[tile]), per
+  // pixel in video-memory order, the cycles since the window's previous pixel
+  // as unsigned LEB128. Numbers stay exact up to 2^53.
   function decodeFrame(f) {
     const frame = page.frames[f];
     if (frame.decoded) return frame.decoded;
@@ -72,7 +73,8 @@
     const bytes = atob(frame.completion);
     const done = new Float64Array(n), owner = new Int32Array(n).fill(-1);
     let pos = 0, first = Infinity, last = 0;
-    frame.windows.forEach(([ox, oy, columns, rows, sx, sy], cell) => {
+    frame.windows.forEach(([ox, oy, columns, rows, sx, sy], window) => {
+      const cell = frame.window_cells ? frame.window_cells[window] : window;
       let t = 0;
       for (let r = 0; r < rows; r++) {
         let s = (oy + r * sy) * width + ox;
@@ -645,11 +647,57 @@
     Object.assign(host.dataset, { links: report.links.length, bytes: bytes });
   }
 
-  // Each part stands alone: one that fails leaves the others and the page's
+  // ---- balanced on demand: which cell traced each tile ----
+  // The tiles are recomputed as balance.h cuts them: ceil(H / side) rows and
+  // ceil(W / side) columns, split as block mode splits (floor(k * W / C)).
+  function buildTileMap() {
+    const host = byId('tile-map');
+    if (!host || !report.balancing) return;
+    const b = report.balancing, w = report.width, h = report.height;
+    const rows = Math.ceil(h / b.tile_side), cols = Math.ceil(w / b.tile_side);
+    const start = (k, length, parts) => Math.floor(k * length / parts);
+    const part = (p, length, parts) => Math.floor(((p + 1) * parts - 1) / length);
+    const scale = Math.max(1, Math.floor(512 / Math.max(w, h)));
+    // Neighbouring ids get distant hues (the golden angle).
+    const colour = (id) => 'hsl(' + ((id * 137.508) % 360).toFixed(1) + ', 65%, ' + (42 + (id % 3) * 12) + '%)';
+    const frames = b.tile_cells.length;
+    host.innerHTML = (frames > 1 ? '<div class="controls"><label>Frame <select>' +
+      b.tile_cells.map((_, f) => '<option value="' + f + '">' + f + '</option>').join('') +
+      '</select></label></div>' : '') + '<canvas width="' + w * scale + '" height="' + h * scale + '"></canvas>';
+    const canvas = host.querySelector('canvas');
+    const select = host.querySelector('select');
+    const context = canvas.getContext('2d');
+    let owners = b.tile_cells[0];
+
+    function draw(frame) {
+      owners = b.tile_cells[frame];
+      owners.forEach((cell, t) => {
+        const r = Math.floor(t / cols), c = t % cols;
+        const x0 = start(c, w, cols), y0 = start(r, h, rows);
+        context.fillStyle = colour(cell);
+        context.fillRect(x0 * scale, y0 * scale, (start(c + 1, w, cols) - x0) * scale,
+          (start(r + 1, h, rows) - y0) * scale);
+      });
+      Object.assign(host.dataset, { frame: frame, tiles: owners.length, cells: new Set(owners).size });
+    }
+
+    if (select) select.addEventListener('change', () => draw(+select.value));
+    canvas.addEventListener('mousemove', (e) => {
+      const box = canvas.getBoundingClientRect();
+      const x = clamp(Math.floor((e.clientX - box.left) / box.width * w), 0, w - 1);
+      const y = clamp(Math.floor((e.clientY - box.top) / box.height * h), 0, h - 1);
+      const t = part(y, h, rows) * cols + part(x, w, cols);
+      showTip('tile ' + t + ', traced by ' + cellName(owners[t]), e);
+    });
+    canvas.addEventListener('mouseleave', hideTip);
+    draw(0);
+  }
+
+
   // plain HTML as they are.
   const parts = {
     player: buildPlayer, completion: buildCompletionHover, cellMap: buildCellMap, table: buildTable,
-    timeline: buildTimeline, frameChart: buildFrameChart, linkMap: buildLinkMap,
+    timeline: buildTimeline, frameChart: buildFrameChart, linkMap: buildLinkMap, tileMap: buildTileMap,
     save: () => {
       saveButton('save-trace', 'trace-data', 'capsim-trace.json');
       saveButton('save-report', 'report-data', 'capsim-report.json');
