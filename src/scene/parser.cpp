@@ -34,7 +34,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), linear_extrude of square, circle and polygon, multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), linear_extrude of square, circle, polygon and text, multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
@@ -44,7 +44,7 @@ bool is_transform(std::string_view n) {
   return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror";
 }
 bool is_setting(std::string_view n) { return n == "camera" || n == "light" || n == "background"; }
-bool is_shape_2d(std::string_view n) { return n == "square" || n == "circle" || n == "polygon"; }
+bool is_shape_2d(std::string_view n) { return n == "square" || n == "circle" || n == "polygon" || n == "text"; }
 bool is_object(std::string_view n) {
   return is_primitive(n) || n == "linear_extrude" || is_transform(n) || n == "union" || n == "difference" ||
          n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
@@ -56,8 +56,8 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   if (is_shape_2d(n))
     return "a 2-D shape is drawn only extruded, under linear_extrude(); capsim renders solids, and a 2-D shape "
            "alone has none";
-  for (std::string_view m : {"text", "offset", "projection"}) {
-    if (n == m) return "this 2-D construct is not supported; capsim extrudes square, circle and polygon, under "
+  for (std::string_view m : {"offset", "projection"}) {
+    if (n == m) return "this 2-D construct is not supported; capsim extrudes square, circle, polygon and text, under "
                        "2-D transforms, union, difference and intersection";
   }
   if (n == "rotate_extrude")
@@ -471,7 +471,7 @@ class Interpreter {
       bool dropped = false;
       for (const auto& m : child.modifiers) dropped = dropped || m.symbol == '%' || m.symbol == '*';
       if (dropped) continue;
-      if (child.name == "polygon") {
+      if (child.name == "polygon" || child.name == "text") {
         n += 2;  // holes or not: the slab is harmless for one path
       } else if (is_shape_2d(child.name)) {
         ++n;
@@ -507,20 +507,23 @@ class Interpreter {
                                     : scene_file::extrude_square(call, plane, e),
                    call, ctx);
     }
-    if (name == "polygon") {
+    if (name == "polygon" || name == "text") {
       no_children(call);
-      return polygon_node(call, scene_file::extrude_polygon(call, plane, e), ctx);
+      return polygon_node(call,
+                          name == "polygon" ? scene_file::extrude_polygon(call, plane, e)
+                                            : scene_file::extrude_text(call, plane, e),
+                          ctx);
     }
     const bool is_group = name == "union" || name == "difference" || name == "intersection" || name == "group" ||
                           name == "render";
     if (!is_group && !is_transform(name) && name != "color" && name != "material") {
       if (name == "import") {
         throw SceneError(call.loc, "import() under linear_extrude() reads a 2-D file (DXF, SVG), which is not "
-                                   "supported; capsim extrudes square, circle and polygon");
+                                   "supported; capsim extrudes square, circle, polygon and text");
       }
       if (is_object(name) || is_setting(name)) {
-        throw SceneError(call.loc, fmt::format("{}() is not a 2-D shape: linear_extrude() extrudes square, circle "
-                                               "and polygon",
+        throw SceneError(call.loc, fmt::format("{}() is not a 2-D shape: linear_extrude() extrudes square, circle, "
+                                               "polygon and text",
                                                name));
       }
       if (name == "projection") {

@@ -2,6 +2,8 @@
 
 #include "scene/scene_extrusion.h"
 
+#include "scene/text_glyphs.h"
+
 #include "capsim/scene_limits.h"
 #include "scene/scene_args.h"
 #include "scene/scene_modules.h"
@@ -292,16 +294,22 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
     paths.push_back(points);
     path_locs.push_back(pts.loc);
   }
+  return extrude_paths(paths, path_locs, e, call.loc, "polygon");
+}
+
+ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
+                            const Extrusion& e, const Loc& loc, std::string_view what) {
   for (std::size_t k = 0; k < paths.size(); ++k) {
     if (area2(paths[k]) == 0 || paths_cross(paths[k], paths[k], true))
-      throw SceneError(path_locs[k], fmt::format("polygon {} crosses itself or encloses no area: capsim extrudes "
+      throw SceneError(path_locs[k], fmt::format("{} {} crosses itself or encloses no area: capsim extrudes "
                                                  "simple outlines only",
+                                                 what,
                                                  paths.size() == 1 ? std::string("outline") : fmt::format("path {}", k)));
     for (std::size_t j = 0; j < k; ++j)
       if (paths_cross(paths[j], paths[k], false))
-        throw SceneError(path_locs[k], fmt::format("polygon paths {} and {} cross: capsim extrudes paths that lie "
+        throw SceneError(path_locs[k], fmt::format("{} paths {} and {} cross: capsim extrudes paths that lie "
                                                    "apart or one inside another",
-                                                   j, k));
+                                                   what, j, k));
   }
   // Each path's parent: the smallest path that holds it (paths do not cross,
   // so one corner tells).
@@ -313,9 +321,55 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
           (parent < 0 || std::abs(area2(paths[j])) < std::abs(area2(paths[static_cast<std::size_t>(parent)]))))
         parent = static_cast<int>(j);
     out.parent.push_back(parent);
-    out.prisms.push_back(prism(paths[k], e, call.loc));
+    out.prisms.push_back(prism(paths[k], e, loc));
   }
   return out;
+}
+
+ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  Args args(call, {"text", "size", "font"},
+            {"halign", "valign", "spacing", "direction", "language", "script"});
+  TextSpec spec;
+  auto text = [&](std::string_view name, std::string& out) {
+    if (!args.has(name)) return;
+    const Value& v = args.value(name);
+    if (v.kind != Value::Kind::String) args.fail_type(name, "a string");
+    out = std::string(v.string);
+  };
+  text("text", spec.text);
+  text("font", spec.font);
+  text("halign", spec.halign);
+  text("valign", spec.valign);
+  text("direction", spec.direction);
+  text("language", spec.language);
+  text("script", spec.script);
+  spec.size = args.number("size", 10);
+  if (!(spec.size > 0 && spec.size <= kMaxLength))
+    args.fail_value("size", fmt::format("size must be positive and at most 1e30, got {}", spec.size));
+  spec.spacing = args.number("spacing", 1);
+  spec.fn = args.number("$fn", 0);
+  spec.fa = args.number("$fa", 12);
+  spec.fs = args.number("$fs", 2);
+  std::vector<TextContour> contours;
+  try {
+    contours = text_contours(spec);
+  } catch (const TextError& error) {
+    throw SceneError(call.loc, error.what());
+  }
+  // OpenSCAD closes each contour by repeating its first point, and a curve
+  // can end where a line began: drop repeated points, which are no edges.
+  std::vector<std::vector<glm::dvec2>> paths;
+  for (const TextContour& c : contours) {
+    std::vector<glm::dvec2> path;
+    for (const glm::dvec2& v : c) {
+      const glm::dvec2 q = apply(plane, v);
+      if (path.empty() || q != path.back()) path.push_back(q);
+    }
+    while (path.size() > 1 && path.back() == path.front()) path.pop_back();
+    if (path.size() >= 3) paths.push_back(std::move(path));
+  }
+  if (paths.empty()) throw SceneError(call.loc, "text() draws nothing here (an empty text, or only spaces)");
+  return extrude_paths(paths, std::vector<Loc>(paths.size(), call.loc), e, call.loc, "text");
 }
 
 }  // namespace capsim::scene_file

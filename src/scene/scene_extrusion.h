@@ -61,4 +61,15 @@ struct ExtrudedPaths {
 };
 ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e);
 
+// Closed paths (already in extrusion space) extruded under the even-odd rule,
+// as extrude_polygon does; `what` names the shape in errors.
+ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
+                            const Extrusion& e, const Loc& loc, std::string_view what);
+
+// text(): its glyphs' contours as OpenSCAD draws them (scene/text_glyphs.h),
+// extruded as a polygon's paths. A font's contours do not cross, and its
+// holes wind against its solids, so the even-odd rule gives OpenSCAD's
+// non-zero union; glyphs that overlap are refused as crossing paths.
+ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extrusion& e);
+
 }  // namespace capsim::scene_file

@@ -128,8 +128,12 @@ TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
   expect_agreement(scad, GetParam(), dir);
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, MeshOracle, ::testing::Values("Old/example011", "Old/example012", "Old/example016"),
-                         [](const auto& info) { return std::string(info.param).substr(4); });
+INSTANTIATE_TEST_SUITE_P(Examples, MeshOracle, ::testing::Values("Old/example011", "Old/example012", "Old/example016",
+                                                                 "Basics/text_on_cube", "Basics/LetterBlock"),
+                         [](const auto& info) {
+                           const std::string path(info.param);
+                           return path.substr(path.rfind('/') + 1);
+                         });
 
 // Straight extrusions: a frustum of a polygon with a hole, less a circle and
 // a square, beside a scaled circle: each 2-D leaf its own solid, the caps cut once.

@@ -550,8 +550,7 @@ TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
         << shape;
   }
   EXPECT_TRUE(Refused("text(\"hi\");", 1, 1,
-                      "'text' is not supported: this 2-D construct is not supported; capsim extrudes square, "
-                      "circle and polygon, under 2-D transforms, union, difference and intersection; supported:"));
+                      "'text' is not supported: a 2-D shape is drawn only extruded, under linear_extrude()"));
   EXPECT_TRUE(Refused("linear_extrude(1) offset(r = 1) square();", 1, 19, "'offset' is not supported: this 2-D"));
   EXPECT_TRUE(Refused("projection() cube();", 1, 1, "'projection' is not supported: this 2-D construct"));
   EXPECT_TRUE(Refused("rotate_extrude() circle(1);", 1, 1,

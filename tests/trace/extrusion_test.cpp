@@ -1,11 +1,13 @@
-// linear_extrude of square, circle and polygon, read and traced: the exact solids each 2-D
-// leaf becomes, the 2-D tree as the 3-D one with the caps cut once, and
+// linear_extrude of square, circle, polygon and text, read and traced: the
+// exact solids each 2-D leaf becomes, the 2-D tree as the 3-D one with the caps cut once, and
 // every refusal at its FILE:LINE:COL.
 
 #include "capsim/parser.h"
 #include "capsim/tracer.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 namespace capsim {
 namespace {
@@ -115,16 +117,46 @@ TEST(ParserExtrusion, Refusals) {
                     "[3, 4, 5]]);"),
             "t.csg:1:89: polygon paths 0 and 1 cross: capsim extrudes paths that lie apart or one inside another");
   EXPECT_EQ(refusal("linear_extrude(1) sphere(1);"),
-            "t.csg:1:19: sphere() is not a 2-D shape: linear_extrude() extrudes square, circle and polygon");
+            "t.csg:1:19: sphere() is not a 2-D shape: linear_extrude() extrudes square, circle, polygon and text");
   EXPECT_EQ(refusal("linear_extrude(1) import(\"a.dxf\");"),
             "t.csg:1:19: import() under linear_extrude() reads a 2-D file (DXF, SVG), which is not supported; capsim "
-            "extrudes square, circle and polygon");
+            "extrudes square, circle, polygon and text");
   EXPECT_EQ(refusal("linear_extrude(1) !square(1);"),
             "t.csg:1:19: the '!' (root) modifier is not supported inside linear_extrude()");
   EXPECT_EQ(refusal("linear_extrude(height = 0) square(1);"),
             "t.csg:1:25: argument 'height' of linear_extrude must be positive, got 0");
   EXPECT_EQ(refusal("linear_extrude(1) scale([1, 0, 1]) square(1);"),
             "t.csg:1:25: singular transform: scale [1, 0, 1] flattens space (every factor must be non-zero)");
+}
+
+// text() extruded: a prism per glyph contour, with the glyphs' holes (the
+// counter of an "O") subtracted; OpenSCAD's own drawing of the same text is
+// compared in tests/scene/text_glyphs_test.cpp and tests/oracle.
+TEST(ParserExtrusion, TextIsAPrismPerContourWithItsHolesSubtracted) {
+  const Scene scene = parse_scene("linear_extrude(2) text(\"O\", size = 10, halign = \"center\", valign = \"center\");",
+                                  "t.csg");
+  // The outline, its hole, and the box that cuts the caps.
+  std::vector<PrimitiveKind> kinds;
+  for (const Primitive& p : scene.primitives) kinds.push_back(p.kind);
+  std::sort(kinds.begin(), kinds.end());
+  EXPECT_EQ(kinds, (std::vector<PrimitiveKind>{PrimitiveKind::Box, PrimitiveKind::Mesh, PrimitiveKind::Mesh}));
+  // Down through the ring of the "O" hits its top; through its counter, nothing.
+  const std::string o = "linear_extrude(2) text(\"O\", size = 10, halign = \"center\", valign = \"center\");";
+  EXPECT_EQ(depth_from_above(o, 0, 0), kInfinity);
+  double ring = kInfinity;
+  for (double x = 2.5; x < 5 && ring == kInfinity; x += 0.1) ring = depth_from_above(o, x, 0);
+  EXPECT_NEAR(ring, 98, 1e-9);
+}
+
+TEST(ParserExtrusion, TextRefusalsNameTheirPlace) {
+  EXPECT_EQ(refusal("linear_extrude(1) text(3);"),
+            "t.csg:1:24: argument 'text' of text must be a string, got a number");
+  EXPECT_EQ(refusal("linear_extrude(1) text(\"a\", size = -1);"),
+            "t.csg:1:36: size must be positive and at most 1e30, got -1");
+  EXPECT_EQ(refusal("linear_extrude(1) text(\" \");"),
+            "t.csg:1:19: text() draws nothing here (an empty text, or only spaces)");
+  EXPECT_EQ(refusal("linear_extrude(1) text(\"a\", $fa = 0, $fs = 0);"),
+            "t.csg:1:19: $fn = 0, $fa = 0, $fs = 0 give more than 1000000 fragments");
 }
 
 }  // namespace
