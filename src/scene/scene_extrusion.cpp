@@ -51,6 +51,13 @@ bool segments_meet(const glm::dvec2& a, const glm::dvec2& b, const glm::dvec2& c
 // Whether two edges of a path (same: p is q), or of two paths, meet where
 // they should not. Edges next to each other in one path share their corner.
 bool paths_cross(const std::vector<glm::dvec2>& p, const std::vector<glm::dvec2>& q, bool same) {
+  if (!same) {
+    // Paths whose boxes are apart cannot cross (a text's glyphs, mostly).
+    glm::dvec2 plo(kInfinity), phi(-kInfinity), qlo(kInfinity), qhi(-kInfinity);
+    for (const glm::dvec2& v : p) plo = glm::min(plo, v), phi = glm::max(phi, v);
+    for (const glm::dvec2& v : q) qlo = glm::min(qlo, v), qhi = glm::max(qhi, v);
+    if (phi.x < qlo.x || qhi.x < plo.x || phi.y < qlo.y || qhi.y < plo.y) return false;
+  }
   for (std::size_t i = 0; i < p.size(); ++i)
     for (std::size_t j = same ? i + 1 : 0; j < q.size(); ++j) {
       if (same && (j == i + 1 || (i == 0 && j + 1 == p.size()))) continue;
@@ -326,6 +333,8 @@ ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, c
   return out;
 }
 
+constexpr std::size_t kMaxTextVertices = 20000;
+
 ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
   Args args(call, {"text", "size", "font"},
             {"halign", "valign", "spacing", "direction", "language", "script"});
@@ -363,12 +372,23 @@ ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extr
     std::vector<glm::dvec2> path;
     for (const glm::dvec2& v : c) {
       const glm::dvec2 q = apply(plane, v);
+      // A huge size or spacing carries glyphs past the range every shape keeps to.
+      if (!(std::abs(q.x) <= kMaxLength && std::abs(q.y) <= kMaxLength))
+        throw SceneError(call.loc, "text() reaches beyond 1e30 from the origin (its size or spacing is too large)");
       if (path.empty() || q != path.back()) path.push_back(q);
     }
     while (path.size() > 1 && path.back() == path.front()) path.pop_back();
     if (path.size() >= 3) paths.push_back(std::move(path));
   }
   if (paths.empty()) throw SceneError(call.loc, "text() draws nothing here (an empty text, or only spaces)");
+  // Checking that no outline crosses another takes time quadratic in the
+  // vertices; beyond this a text is refused rather than left running.
+  std::size_t vertices = 0;
+  for (const auto& path : paths) vertices += path.size();
+  if (vertices > kMaxTextVertices)
+    throw SceneError(call.loc, fmt::format("text() has {} outline vertices, more than the {} capsim checks: use "
+                                           "a shorter text or a smaller $fn",
+                                           vertices, kMaxTextVertices));
   return extrude_paths(paths, std::vector<Loc>(paths.size(), call.loc), e, call.loc, "text");
 }
 

@@ -157,6 +157,11 @@ TEST(ParserExtrusion, TextRefusalsNameTheirPlace) {
             "t.csg:1:19: text() draws nothing here (an empty text, or only spaces)");
   EXPECT_EQ(refusal("linear_extrude(1) text(\"a\", $fa = 0, $fs = 0);"),
             "t.csg:1:19: $fn = 0, $fa = 0, $fs = 0 give more than 1000000 fragments");
+  EXPECT_EQ(refusal("linear_extrude(1) text(\"capsim\", $fn = 4000);"),
+            "t.csg:1:19: text() has 55652 outline vertices, more than the 20000 capsim checks: use a shorter text or "
+            "a smaller $fn");
+  EXPECT_EQ(refusal("linear_extrude(1) text(\"ab\", spacing = 1e300);"),
+            "t.csg:1:19: text() reaches beyond 1e30 from the origin (its size or spacing is too large)");
 }
 
 }  // namespace
