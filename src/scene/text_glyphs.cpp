@@ -237,8 +237,20 @@ int text_curve_segments(const TextSpec& spec) {
 
 std::string text_font_file(const std::string& font) { return find_font(font).path; }
 
+// The glyphs FreeType gave, freed however text_contours ends.
+struct GlyphList {
+  std::vector<Glyph> glyphs;
+  GlyphList() = default;
+  GlyphList(const GlyphList&) = delete;
+  GlyphList& operator=(const GlyphList&) = delete;
+  ~GlyphList() {
+    for (const Glyph& g : glyphs) FT_Done_Glyph(g.glyph);
+  }
+};
+
 std::vector<TextContour> text_contours(const TextSpec& given) {
   TextSpec spec = given;
+  const int segments = text_curve_segments(spec);  // throws before anything is allocated
   detect_properties(spec);
   const FontFile file = find_font(spec.font);
   FreeType ft;
@@ -262,7 +274,9 @@ std::vector<TextContour> text_contours(const TextSpec& given) {
   const bool horizontal = HB_DIRECTION_IS_HORIZONTAL(hb_buffer_get_direction(buffer));
 
   // A glyph FreeType cannot load is left out, as OpenSCAD leaves it out.
-  std::vector<Glyph> glyphs;
+  GlyphList list;
+  std::vector<Glyph>& glyphs = list.glyphs;
+  glyphs.reserve(count);  // so that no push_back throws and loses a glyph
   for (unsigned i = 0; i < count; ++i) {
     Glyph g;
     if (FT_Load_Glyph(ft.face, info[i].codepoint, FT_LOAD_DEFAULT) != 0) continue;
@@ -289,7 +303,7 @@ std::vector<TextContour> text_contours(const TextSpec& given) {
   const double dx = x_offset(spec.halign, width), dy = y_offset(spec.valign, ascend, descend);
 
   std::vector<TextContour> contours;
-  Drawing drawing{spec.size, text_curve_segments(spec), {}, {}, {}, {}, &contours};
+  Drawing drawing{spec.size, segments, {}, {}, {}, {}, &contours};
   FT_Outline_Funcs funcs{};
   funcs.move_to = &Drawing::move_to;
   funcs.line_to = &Drawing::line_to;
@@ -304,7 +318,6 @@ std::vector<TextContour> text_contours(const TextSpec& given) {
     drawing.advance += glm::dvec2(g.position.x_advance * kUnscale * spec.spacing,
                                   g.position.y_advance * kUnscale * spec.spacing);
     drawing.close_contour();
-    FT_Done_Glyph(g.glyph);
   }
   return contours;
 }

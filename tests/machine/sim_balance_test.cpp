@@ -54,7 +54,8 @@ MachineConfig demand_config(CellGrid grid, int tile_pixels, ScreenFormat format 
 }
 
 bool same_floats(const std::vector<float>& a, const std::vector<float>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
+  // An 8-bit screen has no floats: memcmp must not see its null data.
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }
 
 // Every pixel traced once: each tile by one cell, the cells' pixels adding up
