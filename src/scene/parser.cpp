@@ -22,9 +22,11 @@
 
 #include "scene/scene_args.h"
 #include "scene/scene_extrusion.h"
+#include "scene/scene_hulls.h"
 #include "scene/scene_lexer.h"
 #include "scene/scene_meshes.h"
 #include "scene/scene_modules.h"
+#include "scene/scene_surface.h"
 #include "scene/scene_syntax.h"
 
 namespace capsim {
@@ -34,15 +36,17 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), linear_extrude of square, circle, polygon and text, multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude of square, circle, polygon and text, multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
-  return n == "sphere" || n == "cube" || n == "cylinder" || n == "polyhedron" || n == "import";
+  return n == "sphere" || n == "cube" || n == "cylinder" || n == "polyhedron" || n == "import" || n == "surface";
 }
 bool is_transform(std::string_view n) {
   return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror";
 }
+// Solids built out of their children's points (scene_hulls.h).
+bool is_point_hull(std::string_view n) { return n == "hull" || n == "minkowski"; }
 bool is_setting(std::string_view n) { return n == "camera" || n == "light" || n == "background"; }
 bool is_shape_2d(std::string_view n) { return n == "square" || n == "circle" || n == "polygon" || n == "text"; }
 bool is_object(std::string_view n) {
@@ -63,11 +67,8 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   if (n == "rotate_extrude")
     return "revolutions are not supported: capsim traces the solids sphere, cube, cylinder, closed meshes "
            "(polyhedron, imported STL and OFF) and straight extrusions (linear_extrude), exactly";
-  if (n == "surface") return "height maps are not supported; capsim traces exact spheres, boxes, cones and closed "
-                             "meshes (polyhedron, import of STL and OFF)";
   for (std::string_view m : {"hull", "minkowski"}) {
-    if (n == m) return "only union, difference and intersection combine solids; hull and minkowski "
-                       "build new solids out of their children";
+    if (n == m) return "capsim takes hull() and minkowski() of solids, not of 2-D shapes";
   }
   if (n == "resize") return "resizing to the children's bounds is not supported; use scale()";
   for (std::string_view m : {"children", "parent_module", "import_stl", "import_off", "import_dxf",
@@ -83,7 +84,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
                                             *reason, kSupported));
   }
   std::vector<std::string> known;
-  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "linear_extrude", "multmatrix", "translate", "rotate",
+  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "surface", "hull", "minkowski", "linear_extrude", "multmatrix", "translate", "rotate",
                              "scale", "mirror", "union", "difference", "intersection", "group",
                              "render", "color", "material", "camera", "light", "background"}) {
     known.emplace_back(n);
@@ -299,6 +300,7 @@ class Interpreter {
       no_children(call);
       return primitive(call, ctx);
     }
+    if (is_point_hull(name)) return point_hull(call, ctx);
     if (!is_object(name)) {
       unsupported_module(call, ctx);
       return std::nullopt;
@@ -375,7 +377,16 @@ class Interpreter {
   [[gnu::noinline]] CsgNode primitive(const Call& call, ContextId id) {
     return place(call.name == "polyhedron" ? scene_file::read_polyhedron(call)
                  : call.name == "import"   ? scene_file::read_import(call, import_dir_, max_file_bytes_)
+                 : call.name == "surface"  ? scene_file::read_surface(call, import_dir_, max_file_bytes_)
                                            : scene_file::read_primitive(call),
+                 call, id);
+  }
+
+  // hull() or minkowski(): one mesh leaf made of the children's points, in
+  // the colour and material around it (OpenSCAD's too).
+  [[gnu::noinline]] CsgNode point_hull(const Call& call, ContextId id) {
+    const scene_file::FileAccess files{import_dir_, max_file_bytes_};
+    return place(call.name == "hull" ? scene_file::read_hull(call, files) : scene_file::read_minkowski(call, files),
                  call, id);
   }
 
@@ -440,6 +451,7 @@ class Interpreter {
     scene_file::Extrusion e = scene_file::read_linear_extrude(call);
     const bool lone = shape_leaves(call) == 1;
     if (!lone) scene_file::extend_beyond_caps(e);
+    if (e.curved() && e.slices == 0) e.slices = curved_extrusion_slices(call, ctx, e);
     const std::size_t first = all_primitives_.size();
     std::vector<CsgNode> kids;
     for (const Call& child : call.children)
@@ -461,6 +473,24 @@ class Interpreter {
     cut.children.push_back(place(scene_file::extrusion_slab(local, e, call.loc), call, ctx));
     cut.children.push_back(std::move(tree));
     return cut;
+  }
+
+  // OpenSCAD's slices for a curved extrusion that names none: they depend on
+  // the shape's points, so the shape is read once with one slice for them,
+  // then left out (its leaves and any notes), to be read again.
+  [[gnu::noinline]] int curved_extrusion_slices(const Call& call, ContextId ctx, scene_file::Extrusion e) {
+    e.slices = 1;
+    e.collars = false;
+    const std::size_t first = all_primitives_.size(), noted = module_errors_.size(), unlisted = unlisted_errors_;
+    for (const Call& child : call.children) shape(child, ctx, glm::dmat3(1.0), e);
+    std::vector<glm::dvec2> bottom;  // the leaves' points at z = 0, as the shape has them
+    for (std::size_t k = first; k < all_primitives_.size(); ++k)
+      for (const glm::dvec3& v : all_primitives_[k].mesh->vertices)
+        if (v.z == 0) bottom.emplace_back(v.x, v.y);
+    all_primitives_.erase(all_primitives_.begin() + static_cast<std::ptrdiff_t>(first), all_primitives_.end());
+    module_errors_.erase(module_errors_.begin() + static_cast<std::ptrdiff_t>(noted), module_errors_.end());
+    unlisted_errors_ = unlisted;
+    return scene_file::extrusion_slices(bottom, e);
   }
 
   // The 2-D leaves under an extrusion that are drawn (a polygon with holes

@@ -2,7 +2,9 @@
 
 #include "scene/scene_extrusion.h"
 
+#include "scene/openscad_tessellation.h"
 #include "scene/text_glyphs.h"
+#include "scene/twisted_extrusion.h"
 
 #include "capsim/scene_limits.h"
 #include "scene/scene_args.h"
@@ -86,8 +88,28 @@ glm::dvec2 number_or_vec2(const Args& args, std::string_view name, glm::dvec2 fa
   return {v.items[0].number, v.items[1].number};
 }
 
+// A curved extrusion's leaf: OpenSCAD's tessellation of the path swept.
+Primitive swept_prism(const std::vector<glm::dvec2>& path, const Extrusion& e, const Loc& loc) {
+  const double points = static_cast<double>(path.size()) * (e.slices + 3);
+  if (points > static_cast<double>(kMaxTessellatedPoints))
+    throw SceneError(loc, fmt::format("this twisted or unevenly scaled extrusion would have {:g} points ({} slices of "
+                                      "{}), more than the {} capsim tessellates",
+                                      points, e.slices, path.size(), kMaxTessellatedPoints));
+  const Sweep sweep{e.height, e.twist, e.scale_xy, e.slices, e.collars};
+  MeshBuild built = build_closed_mesh(sweep_mesh(path, sweep));
+  if (!built.mesh)
+    throw SceneError(loc, fmt::format("this twisted or unevenly scaled extrusion is not a solid: {}", built.defect.reason));
+  Primitive p;
+  p.kind = PrimitiveKind::Mesh;
+  p.mesh = std::make_shared<const TriangleMesh>(std::move(*built.mesh));
+  p.to_world = base(e);
+  p.loc = loc;
+  return p;
+}
+
 // The prism (or frustum, or pyramid at scale 0) over a simple path.
 Primitive prism(const std::vector<glm::dvec2>& path, const Extrusion& e, const Loc& loc) {
+  if (e.curved()) return swept_prism(path, e, loc);
   PolygonMesh m;
   const auto n = static_cast<std::uint32_t>(path.size());
   const double k0 = e.factor(e.f0), k1 = e.factor(e.f1);
@@ -127,6 +149,10 @@ Primitive prism(const std::vector<glm::dvec2>& path, const Extrusion& e, const L
 }  // namespace
 
 void extend_beyond_caps(Extrusion& e) {
+  if (e.curved()) {
+    e.collars = true;
+    return;
+  }
   // Half the height each way, less where the shape would shrink below half
   // its size at the cap (k(f) >= k(cap) / 2); at scale 0 the top is a point
   // and is not passed.
@@ -171,20 +197,24 @@ Extrusion read_linear_extrude(const Call& call) {
   if (!(e.height <= kMaxLength)) args.fail_value("height", "the height must be at most 1e30");
   e.center = args.boolean("center", false);
   args.number("convexity", 1);
-  args.number("slices", 1);
   args.number("segments", 0);
-  if (args.number("twist", 0) != 0)
-    args.fail_value("twist", "a twisted extrusion is not supported: its sides are curved surfaces that capsim "
-                             "does not trace (only straight extrusions, twist = 0)");
+  // OpenSCAD takes the whole part of slices, and computes them when that is not positive.
+  const double slices = std::trunc(args.number("slices", 0));
+  if (slices > kMaxSlices)
+    args.fail_value("slices", fmt::format("{} slices are more than the {} capsim tessellates", slices, kMaxSlices));
+  e.slices = slices > 0 ? static_cast<int>(slices) : 0;
+  e.twist = args.number("twist", 0);
   if (args.has("scale")) {
     const glm::dvec2 sc = number_or_vec2(args, "scale", glm::dvec2(1));
     if (!(sc.x >= 0 && sc.y >= 0)) args.fail_value("scale", "the scale must not be negative");
-    if (sc.x != sc.y)
-      args.fail_value("scale", fmt::format("a scale of {} in x and {} in y is not supported: the sides of such an "
-                                           "extrusion are curved surfaces (give one scale for both)",
-                                           sc.x, sc.y));
+    e.scale_xy = sc;
     e.scale = sc.x;
   }
+  const Resolution res = read_resolution(call);
+  e.fn = res.fn;
+  e.fa = res.fa;
+  e.fs = res.fs;
+  if (!e.curved()) e.slices = 0;
   return e;
 }
 
@@ -213,6 +243,13 @@ Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrus
   if (!(v > 0 && v <= kMaxLength))
     args.fail_value(given, fmt::format("{} must be positive and at most 1e30, got {}", args.what(given), v));
   const double r = given == "d" ? v / 2 : v;
+  if (e.curved()) {
+    // No closed form: the circle is OpenSCAD's polygon of it.
+    std::vector<glm::dvec2> path;
+    for (const glm::dvec2& q : openscad_circle(r, fragments_for(r, read_resolution(call), call.loc)))
+      path.push_back(apply(plane, q));
+    return prism(path, e, call.loc);
+  }
   // The cone's canonical frustum has radius r1 at z = 0 and r2 at z = 1, the
   // larger 1; at height fraction f the circle is scaled by k(f) = 1 + (s - 1) f,
   // so its centre t moves to k(f) t: a shear along z.
@@ -240,7 +277,7 @@ Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrus
                                         "[{}, {}]",
                                         size.x, size.y));
   const glm::dvec2 lo = args.boolean("center", false) ? -size / 2.0 : glm::dvec2(0);
-  if (e.scale != 1) {
+  if (e.scale != 1 || e.curved()) {
     const glm::dvec2 c[4] = {lo, lo + glm::dvec2(size.x, 0), lo + size, lo + glm::dvec2(0, size.y)};
     std::vector<glm::dvec2> path;
     for (const glm::dvec2& k : c) path.push_back(apply(plane, k));
@@ -390,6 +427,21 @@ ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extr
                                            "a shorter text or a smaller $fn",
                                            vertices, kMaxTextVertices));
   return extrude_paths(paths, std::vector<Loc>(paths.size(), call.loc), e, call.loc, "text");
+}
+
+}  // namespace capsim::scene_file
+
+namespace capsim::scene_file {
+
+int extrusion_slices(const std::vector<glm::dvec2>& points, const Extrusion& e) {
+  double reach_sqr = 0, move_sqr = 0;
+  for (const glm::dvec2& p : points) {
+    reach_sqr = std::max(reach_sqr, glm::dot(p, p));
+    const glm::dvec2 moved = p - p * e.scale_xy;
+    move_sqr = std::max(move_sqr, glm::dot(moved, moved));
+  }
+  const Sweep sweep{e.height, e.twist, e.scale_xy, 1, false};
+  return std::min(openscad_slices(reach_sqr, move_sqr, sweep, e.fn, e.fa, e.fs), kMaxSlices);
 }
 
 }  // namespace capsim::scene_file

@@ -27,7 +27,24 @@ struct Extrusion {
   // subtracted from it would leave the hole's cap undecided.
   double f0 = 0, f1 = 1;
   double factor(double f) const { return 1 + (scale - 1) * f; }
+
+  // A twist, or different scales in x and y (`scale` is then unused): the
+  // sides are curved, and each leaf is OpenSCAD's tessellation of it
+  // (scene/twisted_extrusion.h) with `slices` slices, 0 until the shape's
+  // points are known (extrusion_slices).
+  double twist = 0;
+  glm::dvec2 scale_xy{1.0, 1.0};
+  int slices = 0;
+  double fn = 0, fa = 12, fs = 2;  // the extrusion's own, for its slices
+  bool collars = false;            // leaves reach a slice beyond both caps
+  bool curved() const { return twist != 0 || scale_xy.x != scale_xy.y; }
 };
+
+// OpenSCAD's number of slices of a curved extrusion, from the points of its
+// shape (in extrusion space, at the bottom). Capsim takes every point of
+// every leaf, where OpenSCAD takes those of the shape's outline after its
+// 2-D booleans; the two agree unless a leaf's points lie outside the shape.
+int extrusion_slices(const std::vector<glm::dvec2>& points, const Extrusion& e);
 
 // Extends the leaves' span beyond both caps (Extrusion::f0, f1).
 void extend_beyond_caps(Extrusion& e);
@@ -36,9 +53,10 @@ void extend_beyond_caps(Extrusion& e);
 // padded: intersected with the leaves' CSG tree, it gives the caps.
 Primitive extrusion_slab(const std::vector<Primitive>& leaves, const Extrusion& e, const Loc& loc);
 
-// Refuses a twist other than 0 and a scale that differs between x and y
-// (their side faces are curved) with the reason.
+// linear_extrude's arguments, checked: a height within 1e30, scales not
+// negative, at most kMaxSlices slices.
 Extrusion read_linear_extrude(const Call& call);
+inline constexpr int kMaxSlices = 100000;
 
 // A 2-D transform's matrix (x' = m * (x, y, 1)): the plane part of the call's
 // 3-D matrix, refused when it flattens the plane.

@@ -145,3 +145,11 @@ Primitive read_import(const Call& call, const std::string& import_dir, std::size
 }
 
 }  // namespace capsim::scene_file
+
+namespace capsim::scene_file {
+
+std::string resolve_file_argument(const Args& args, const std::string& file, const std::string& import_dir) {
+  return resolve_import(args, file, import_dir);
+}
+
+}  // namespace capsim::scene_file

@@ -1,5 +1,5 @@
 // Mesh leaves and extrusions against OpenSCAD's own result: OpenSCAD's
-// examples that use polyhedron(), import() and linear_extrude() are exported twice, to CSG (which capsim reads)
+// examples that use polyhedron(), import(), surface(), hull() and linear_extrude() are exported twice, to CSG (which capsim reads)
 // and, rendered by OpenSCAD with $fn = 96, to STL; Embree casts capsim's
 // primary rays at the STL's triangles. The depths must agree within 1 % on
 // at least 98 % of the pixels, leaving out those within one pixel of either
@@ -129,7 +129,9 @@ TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Examples, MeshOracle, ::testing::Values("Old/example011", "Old/example012", "Old/example016",
-                                                                 "Basics/text_on_cube", "Basics/LetterBlock"),
+                                                                 "Basics/text_on_cube", "Basics/LetterBlock",
+                                                                 "Old/example006", "Old/example010",
+                                                                 "Basics/linear_extrude"),
                          [](const auto& info) {
                            const std::string path(info.param);
                            return path.substr(path.rfind('/') + 1);

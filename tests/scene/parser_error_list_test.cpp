@@ -71,7 +71,7 @@ TEST(ParserErrorList, EveryUnsupportedModuleIsNamedInFileOrder) {
 }
 
 TEST(ParserErrorList, AnotherErrorAfterThemEndsTheList) {
-  const std::string what = error_of("hull() sphere(1);\nminkowski() cube(1);\nsphere(r = -1);\ncircle(1);\n");
+  const std::string what = error_of("resize([1, 1, 1]) sphere(1);\nresize([2, 2, 2]) cube(1);\nsphere(r = -1);\ncircle(1);\n");
   const std::vector<std::string> at = places(what);
   ASSERT_EQ(at.size(), 3u) << what;
   EXPECT_EQ(at[0], "t.csg:1:1");
@@ -81,7 +81,7 @@ TEST(ParserErrorList, AnotherErrorAfterThemEndsTheList) {
 }
 
 TEST(ParserErrorList, AnErrorBeforeThemIsTheOnlyOne) {
-  const std::string what = error_of("sphere(r = -1);\nhull() sphere(1);\n");
+  const std::string what = error_of("sphere(r = -1);\nresize([1, 1, 1]) sphere(1);\n");
   EXPECT_EQ(places(what).size(), 1u) << what;
   EXPECT_EQ(what.rfind("t.csg:1:", 0), 0u) << what;
 }

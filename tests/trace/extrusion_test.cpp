@@ -103,12 +103,11 @@ TEST(ParserExtrusion, PolygonPathsFollowTheEvenOddRule) {
 }
 
 TEST(ParserExtrusion, Refusals) {
-  EXPECT_EQ(refusal("linear_extrude(height = 3, twist = 90) square(1);"),
-            "t.csg:1:36: a twisted extrusion is not supported: its sides are curved surfaces that capsim does not "
-            "trace (only straight extrusions, twist = 0)");
-  EXPECT_EQ(refusal("linear_extrude(height = 3, scale = [1, 2]) square(1);"),
-            "t.csg:1:36: a scale of 1 in x and 2 in y is not supported: the sides of such an extrusion are curved "
-            "surfaces (give one scale for both)");
+  EXPECT_EQ(refusal("linear_extrude(height = 3, twist = 90, slices = 1e6) square(1);"),
+            "t.csg:1:49: 1000000 slices are more than the 100000 capsim tessellates");
+  EXPECT_EQ(refusal("linear_extrude(height = 3, twist = 90, slices = 90000) circle(1, $fn = 1000);"),
+            "t.csg:1:56: this twisted or unevenly scaled extrusion would have 9.0003e+07 points (90000 slices of "
+            "1000), more than the 4000000 capsim tessellates");
   EXPECT_EQ(refusal("linear_extrude(1) polygon([[0, 0], [1, 1], [1, 0], [0, 1]]);"),
             "t.csg:1:27: polygon outline crosses itself or encloses no area: capsim extrudes simple outlines only");
   EXPECT_EQ(refusal("linear_extrude(1) polygon([[0, 0], [1, 0], [2, 0]]);"),
