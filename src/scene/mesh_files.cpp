@@ -26,6 +26,8 @@ std::string extension(const std::string& path) {
   return e;
 }
 
+}  // namespace
+
 std::string read_whole(const std::string& path, std::size_t max_bytes) {
   std::error_code ec;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
@@ -39,6 +41,8 @@ std::string read_whole(const std::string& path, std::size_t max_bytes) {
     throw MeshFileError(fmt::format("{}: the file is larger than {} bytes, the most capsim reads", path, max_bytes));
   return text.str();
 }
+
+namespace {
 
 // Whitespace-separated words of a text file, each with its line; '#' starts a
 // comment to the end of the line where `comments` is set (OFF).

@@ -22,6 +22,10 @@ class MeshFileError : public std::runtime_error {
 // Every coordinate must be a finite number within 1e30 of the origin.
 PolygonMesh read_mesh_file(const std::string& path, std::size_t max_bytes);
 
+// A file's bytes, refused (MeshFileError, "PATH: message") when it cannot be
+// read or holds more than max_bytes.
+std::string read_whole(const std::string& path, std::size_t max_bytes);
+
 // Whether read_mesh_file reads files with this name's extension.
 bool is_mesh_file_name(const std::string& path);
 

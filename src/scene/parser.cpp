@@ -28,6 +28,7 @@
 #include "scene/scene_modules.h"
 #include "scene/scene_surface.h"
 #include "scene/scene_syntax.h"
+#include "scene/region_2d.h"
 
 namespace capsim {
 namespace {
@@ -36,7 +37,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude of square, circle, polygon and text, multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude of square, circle, polygon, text, offset and import (DXF), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
@@ -60,7 +61,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   if (is_shape_2d(n))
     return "a 2-D shape is drawn only extruded, under linear_extrude(); capsim renders solids, and a 2-D shape "
            "alone has none";
-  for (std::string_view m : {"offset", "projection"}) {
+  for (std::string_view m : {"projection"}) {
     if (n == m) return "this 2-D construct is not supported; capsim extrudes square, circle, polygon and text, under "
                        "2-D transforms, union, difference and intersection";
   }
@@ -296,6 +297,7 @@ class Interpreter {
 
   std::optional<CsgNode> build(const Call& call, ContextId ctx) {
     std::string_view name = call.name;
+    if (is_flat_design(call)) return flat_design(call, ctx);
     if (is_primitive(name)) {
       no_children(call);
       return primitive(call, ctx);
@@ -448,14 +450,22 @@ class Interpreter {
   // linear_extrude: its 2-D tree as a 3-D one over extruded leaves
   // (scene_extrusion.h). With more than one leaf, a slab cut gives the caps.
   [[gnu::noinline]] std::optional<CsgNode> extrusion(const Call& call, ContextId ctx) {
-    scene_file::Extrusion e = scene_file::read_linear_extrude(call);
-    const bool lone = shape_leaves(call) == 1;
+    return extruded(call, call.children, ctx, scene_file::read_linear_extrude(call));
+  }
+
+  // The extrusion `e` of the 2-D calls `shapes`, named by `call`.
+  std::optional<CsgNode> extruded(const Call& call, std::span<const Call> shapes, ContextId ctx,
+                                  scene_file::Extrusion e) {
+    const bool lone = shape_leaves(shapes) == 1;
     if (!lone) scene_file::extend_beyond_caps(e);
-    if (e.curved() && e.slices == 0) e.slices = curved_extrusion_slices(call, ctx, e);
+    if (e.curved() && e.slices == 0) e.slices = curved_extrusion_slices(shapes, ctx, e);
     const std::size_t first = all_primitives_.size();
     std::vector<CsgNode> kids;
-    for (const Call& child : call.children)
-      if (auto node = shape(child, ctx, glm::dmat3(1.0), e)) kids.push_back(std::move(*node));
+    for (const Call& child : shapes) {
+      // A 2-D-only design is its own shape, its modifiers already applied.
+      auto node = &child == &call ? shape_node(child, ctx, glm::dmat3(1.0), e) : shape(child, ctx, glm::dmat3(1.0), e);
+      if (node) kids.push_back(std::move(*node));
+    }
     if (kids.empty()) return empty_union(call.loc);
     CsgNode tree = pass_through(call, std::move(kids));
     if (lone) return tree;
@@ -478,11 +488,11 @@ class Interpreter {
   // OpenSCAD's slices for a curved extrusion that names none: they depend on
   // the shape's points, so the shape is read once with one slice for them,
   // then left out (its leaves and any notes), to be read again.
-  [[gnu::noinline]] int curved_extrusion_slices(const Call& call, ContextId ctx, scene_file::Extrusion e) {
+  [[gnu::noinline]] int curved_extrusion_slices(std::span<const Call> shapes, ContextId ctx, scene_file::Extrusion e) {
     e.slices = 1;
     e.collars = false;
     const std::size_t first = all_primitives_.size(), noted = module_errors_.size(), unlisted = unlisted_errors_;
-    for (const Call& child : call.children) shape(child, ctx, glm::dmat3(1.0), e);
+    for (const Call& child : shapes) shape(child, ctx, glm::dmat3(1.0), e);
     std::vector<glm::dvec2> bottom;  // the leaves' points at z = 0, as the shape has them
     for (std::size_t k = first; k < all_primitives_.size(); ++k)
       for (const glm::dvec3& v : all_primitives_[k].mesh->vertices)
@@ -495,18 +505,18 @@ class Interpreter {
 
   // The 2-D leaves under an extrusion that are drawn (a polygon with holes
   // counts each path).
-  static int shape_leaves(const Call& call) {
+  static int shape_leaves(std::span<const Call> shapes) {
     int n = 0;
-    for (const Call& child : call.children) {
+    for (const Call& child : shapes) {
       bool dropped = false;
       for (const auto& m : child.modifiers) dropped = dropped || m.symbol == '%' || m.symbol == '*';
       if (dropped) continue;
-      if (child.name == "polygon" || child.name == "text") {
+      if (child.name == "polygon" || child.name == "text" || scene_file::needs_clipping(child)) {
         n += 2;  // holes or not: the slab is harmless for one path
       } else if (is_shape_2d(child.name)) {
         ++n;
       } else {
-        n += shape_leaves(child);
+        n += shape_leaves(child.children);
       }
     }
     return n;
@@ -531,6 +541,7 @@ class Interpreter {
   [[gnu::noinline]] std::optional<CsgNode> shape_node(const Call& call, ContextId ctx, const glm::dmat3& plane,
                                                       const scene_file::Extrusion& e) {
     const std::string_view name = call.name;
+    if (scene_file::needs_clipping(call)) return clipped_node(call, ctx, plane, e);
     if (name == "circle" || name == "square") {
       no_children(call);
       return place(name == "circle" ? scene_file::extrude_circle(call, plane, e)
@@ -587,6 +598,48 @@ class Interpreter {
     node.loc = call.loc;
     node.children = std::move(kids);
     return node;
+  }
+
+  // A 2-D subtree that must be clipped (scene/region_2d.h), extruded as
+  // its region's paths.
+  [[gnu::noinline]] CsgNode clipped_node(const Call& call, ContextId ctx, const glm::dmat3& plane,
+                                         const scene_file::Extrusion& e) {
+    const scene_file::NestedPaths region = scene_file::nested_region_paths(call, plane, {import_dir_, max_file_bytes_});
+    return polygon_node(call, scene_file::extrude_nested_paths(region.paths, region.parent, e, call.loc), ctx);
+  }
+
+  // A 2-D shape outside any extrusion (a 2-D-only design) is drawn as
+  // OpenSCAD's preview draws it: 1 unit thick, centred on z = 0.
+  static bool is_flat_design(const Call& call) {
+    const std::string_view name = call.name;
+    if (is_shape_2d(name) || name == "offset") return true;
+    if (name == "import") return scene_file::is_2d_import(call);
+    if (name == "difference" || name == "intersection") return starts_2d(call);
+    return false;
+  }
+
+  // Whether a subtree's first drawn shape is 2-D (OpenSCAD takes a
+  // boolean's dimension from its first child).
+  static bool starts_2d(const Call& call) {
+    for (const Call& child : call.children) {
+      bool dropped = false;
+      for (const auto& m : child.modifiers) dropped = dropped || m.symbol == '%' || m.symbol == '*';
+      if (dropped) continue;
+      if (is_shape_2d(child.name) || child.name == "offset") return true;
+      if (child.name == "import") return scene_file::is_2d_import(child);
+      const bool passes = is_transform(child.name) || child.name == "union" || child.name == "difference" ||
+                          child.name == "intersection" || child.name == "group" || child.name == "render" ||
+                          child.name == "color" || child.name == "material";
+      return passes && starts_2d(child);
+    }
+    return false;
+  }
+
+  [[gnu::noinline]] std::optional<CsgNode> flat_design(const Call& call, ContextId ctx) {
+    scene_file::Extrusion e;
+    e.height = 1;
+    e.center = true;
+    return extruded(call, std::span<const Call>(&call, 1), ctx, e);
   }
 
   // The even-odd rule as CSG: the union of the outlines (paths at even

@@ -296,7 +296,7 @@ Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrus
   return p;
 }
 
-ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+PolygonPaths read_polygon_paths(const Call& call, const glm::dmat3& plane) {
   Args args(call, {"points", "paths", "convexity"});
   args.number("convexity", 1);
   if (!args.has("points")) throw SceneError(call.loc, "polygon needs its points");
@@ -312,8 +312,9 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
                                           describe(p)));
     points.push_back(apply(plane, {p.items[0].number, p.items[1].number}));
   }
-  std::vector<std::vector<glm::dvec2>> paths;
-  std::vector<Loc> path_locs;
+  PolygonPaths out;
+  std::vector<std::vector<glm::dvec2>>& paths = out.paths;
+  std::vector<Loc>& path_locs = out.locs;
   if (args.has("paths")) {
     const Value& ps = args.value("paths");
     if (ps.kind != Value::Kind::Vector || ps.items.empty()) args.fail_type("paths", "a vector of paths");
@@ -338,7 +339,12 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
     paths.push_back(points);
     path_locs.push_back(pts.loc);
   }
-  return extrude_paths(paths, path_locs, e, call.loc, "polygon");
+  return out;
+}
+
+ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  const PolygonPaths p = read_polygon_paths(call, plane);
+  return extrude_paths(p.paths, p.locs, e, call.loc, "polygon");
 }
 
 ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
@@ -370,9 +376,26 @@ ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, c
   return out;
 }
 
+bool paths_meet(const std::vector<std::vector<glm::dvec2>>& paths) {
+  for (std::size_t k = 0; k < paths.size(); ++k) {
+    if (paths_cross(paths[k], paths[k], true)) return true;
+    for (std::size_t j = 0; j < k; ++j)
+      if (paths_cross(paths[j], paths[k], false)) return true;
+  }
+  return false;
+}
+
+ExtrudedPaths extrude_nested_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<int>& parent,
+                                   const Extrusion& e, const Loc& loc) {
+  ExtrudedPaths out;
+  out.parent = parent;
+  for (const auto& path : paths) out.prisms.push_back(prism(path, e, loc));
+  return out;
+}
+
 constexpr std::size_t kMaxTextVertices = 20000;
 
-ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+std::vector<std::vector<glm::dvec2>> read_text_paths(const Call& call, const glm::dmat3& plane) {
   Args args(call, {"text", "size", "font"},
             {"halign", "valign", "spacing", "direction", "language", "script"});
   TextSpec spec;
@@ -426,6 +449,11 @@ ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extr
     throw SceneError(call.loc, fmt::format("text() has {} outline vertices, more than the {} capsim checks: use "
                                            "a shorter text or a smaller $fn",
                                            vertices, kMaxTextVertices));
+  return paths;
+}
+
+ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  const std::vector<std::vector<glm::dvec2>> paths = read_text_paths(call, plane);
   return extrude_paths(paths, std::vector<Loc>(paths.size(), call.loc), e, call.loc, "text");
 }
 

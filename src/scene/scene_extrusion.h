@@ -84,6 +84,27 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
 ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
                             const Extrusion& e, const Loc& loc, std::string_view what);
 
+// A polygon's paths (placed by `plane`) and where each is written.
+struct PolygonPaths {
+  std::vector<std::vector<glm::dvec2>> paths;
+  std::vector<Loc> locs;
+};
+PolygonPaths read_polygon_paths(const Call& call, const glm::dmat3& plane);
+
+// Whether any path crosses or touches itself or another: such paths are
+// clipped first (scene/region_2d.h), not extruded one by one.
+bool paths_meet(const std::vector<std::vector<glm::dvec2>>& paths);
+
+// Paths whose nesting is known (parent[k]: the path directly around path k,
+// -1 for none), extruded each to a prism; paths may touch at vertices, as
+// Clipper's output does.
+ExtrudedPaths extrude_nested_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<int>& parent,
+                                   const Extrusion& e, const Loc& loc);
+
+// text()'s glyph contours placed by `plane` (empty contours dropped), refused
+// when beyond 1e30 or too many to check.
+std::vector<std::vector<glm::dvec2>> read_text_paths(const Call& call, const glm::dmat3& plane);
+
 // text(): its glyphs' contours as OpenSCAD draws them (scene/text_glyphs.h),
 // extruded as a polygon's paths. A font's contours do not cross, and its
 // holes wind against its solids, so the even-odd rule gives OpenSCAD's

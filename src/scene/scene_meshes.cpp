@@ -77,8 +77,8 @@ Primitive mesh_primitive(TriangleMesh mesh) {
   return p;
 }
 
-// The file an import names, as OpenSCAD finds it (beside the file that names
-// it), else in the current directory.
+}  // namespace
+
 std::string resolve_import(const Args& args, const std::string& file, const std::string& import_dir) {
   namespace fs = std::filesystem;
   const fs::path given(file);
@@ -91,8 +91,6 @@ std::string resolve_import(const Args& args, const std::string& file, const std:
                                       "the current directory",
                                       file, beside.string()));
 }
-
-}  // namespace
 
 Primitive read_polyhedron(const Call& call) {
   Args args(call, {"points", "faces", "convexity"}, {"triangles"});
@@ -142,14 +140,6 @@ Primitive read_import(const Call& call, const std::string& import_dir, std::size
   Primitive p = mesh_primitive(std::move(*built.mesh));
   p.loc = call.loc;
   return p;
-}
-
-}  // namespace capsim::scene_file
-
-namespace capsim::scene_file {
-
-std::string resolve_file_argument(const Args& args, const std::string& file, const std::string& import_dir) {
-  return resolve_import(args, file, import_dir);
 }
 
 }  // namespace capsim::scene_file

@@ -20,11 +20,10 @@ Primitive read_polyhedron(const Call& call);
 // from the model's directory). Files larger than max_bytes are refused.
 Primitive read_import(const Call& call, const std::string& import_dir, std::size_t max_bytes);
 
+// The file an import names, as OpenSCAD finds it (beside the file that names
+// it, in `import_dir`), else in the current directory; refused at the
+// argument `file` of `args` when neither holds it.
 class Args;
-
-// The file a "file" argument names, found as import() finds it (beside the
-// scene file, in import_dir, then in the current directory); refused at the
-// argument when it is in none of them.
-std::string resolve_file_argument(const Args& args, const std::string& file, const std::string& import_dir);
+std::string resolve_import(const Args& args, const std::string& file, const std::string& import_dir);
 
 }  // namespace capsim::scene_file

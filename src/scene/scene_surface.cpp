@@ -22,7 +22,7 @@ Primitive read_surface(const Call& call, const std::string& import_dir, std::siz
   args.number("timestamp", 0);
   const bool center = args.boolean("center", false);
   const bool invert = args.boolean("invert", false);
-  const std::string path = resolve_file_argument(args, std::string(f.string), import_dir);
+  const std::string path = resolve_import(args, std::string(f.string), import_dir);
   HeightMap map;
   try {
     map = read_height_map(path, max_bytes, invert);
