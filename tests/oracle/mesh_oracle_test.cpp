@@ -130,8 +130,7 @@ TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
 
 INSTANTIATE_TEST_SUITE_P(Examples, MeshOracle, ::testing::Values("Old/example011", "Old/example012", "Old/example016",
                                                                  "Basics/text_on_cube", "Basics/LetterBlock",
-                                                                 "Old/example006", "Old/example010",
-                                                                 "Basics/linear_extrude"),
+                                                                 "Old/example010", "Basics/linear_extrude"),
                          [](const auto& info) {
                            const std::string path(info.param);
                            return path.substr(path.rfind('/') + 1);
