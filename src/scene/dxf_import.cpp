@@ -229,7 +229,7 @@ class Reader {
 
   void start_entity(std::string_view data) {
     mode_ = std::string(data);
-    entity_line_ = line_ - 1;
+    entity_line_ = line_;  // the line naming the entity
     layer_.clear();
     id_.clear();
     flags_ = 0;

@@ -89,16 +89,13 @@ Agreement compare(const std::vector<double>& a, const std::vector<double>& b) {
   return r;
 }
 
-// capsim's depth image of the .scad against Embree's of OpenSCAD's STL.
-void expect_agreement(const std::filesystem::path& scad, const std::string& label, const TempDir& dir) {
-  const std::string csg = dir / "model.csg", stl = dir / "model.stl";
-  ASSERT_EQ(std::system(fmt::format("openscad -o '{}' '{}' >/dev/null 2>&1", csg, scad.string()).c_str()), 0);
-  ASSERT_EQ(std::system(fmt::format("openscad -D '$fn=96' -o '{}' '{}' >/dev/null 2>&1", stl, scad.string()).c_str()),
-            0);
-  // The export names its imports as the .scad does: beside the .scad.
+// capsim's depth image of a CSG export against Embree's of an STL;
+// `import_dir`: where the export's imports lie.
+void expect_depth_agreement(const std::string& csg, const std::string& stl, const std::filesystem::path& import_dir,
+                            const std::string& label) {
   PrepareOptions options;
   options.width = options.height = kSide;
-  const PreparedScene ps = prepare_scene(parse_scene_file(csg, {}, 0, scad.parent_path().string()), options);
+  const PreparedScene ps = prepare_scene(parse_scene_file(csg, {}, 0, import_dir.string()), options);
   const Tracer tracer(ps, {true, 0});
   const StlScene reference(stl);
   std::vector<double> ours(kSide * kSide), theirs(kSide * kSide);
@@ -119,6 +116,37 @@ void expect_agreement(const std::filesystem::path& scad, const std::string& labe
   EXPECT_GE(share, 0.98) << label;
 }
 
+// capsim's depth image of the .scad against Embree's of OpenSCAD's STL.
+void expect_agreement(const std::filesystem::path& scad, const std::string& label, const TempDir& dir) {
+  const std::string csg = dir / "model.csg", stl = dir / "model.stl";
+  ASSERT_EQ(std::system(fmt::format("openscad -o '{}' '{}' >/dev/null 2>&1", csg, scad.string()).c_str()), 0);
+  ASSERT_EQ(std::system(fmt::format("openscad -D '$fn=96' -o '{}' '{}' >/dev/null 2>&1", stl, scad.string()).c_str()),
+            0);
+  // The export names its imports as the .scad does: beside the .scad.
+  expect_depth_agreement(csg, stl, scad.parent_path(), label);
+}
+
+// A 2-D-only design, which OpenSCAD cannot export as STL: its CSG export
+// under linear_extrude(height = 1, center = true), the thickness capsim
+// draws it with, exported by OpenSCAD.
+void expect_flat_agreement(const std::filesystem::path& scad, const std::string& label, const TempDir& dir) {
+  const std::string csg = dir / "model.csg", flat = dir / "flat.scad", stl = dir / "flat.stl";
+  ASSERT_EQ(std::system(fmt::format("openscad -o '{}' '{}' >/dev/null 2>&1", csg, scad.string()).c_str()), 0);
+  {
+    std::ifstream in(csg);
+    std::ofstream out(flat);
+    out << "linear_extrude(height = 1, center = true) {\n" << in.rdbuf() << "}\n";
+  }
+  ASSERT_EQ(std::system(fmt::format("openscad -o '{}' '{}' >/dev/null 2>&1", stl, flat).c_str()), 0);
+  expect_depth_agreement(csg, stl, scad.parent_path(), label);
+}
+
+// A test's name: the example's file name ("Old/example011": example011).
+std::string example_name(const ::testing::TestParamInfo<const char*>& info) {
+  const std::string path(info.param);
+  return path.substr(path.rfind('/') + 1);
+}
+
 class MeshOracle : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
@@ -130,11 +158,38 @@ TEST_P(MeshOracle, DepthAgreesWithOpenScadsStl) {
 
 INSTANTIATE_TEST_SUITE_P(Examples, MeshOracle, ::testing::Values("Old/example011", "Old/example012", "Old/example016",
                                                                  "Basics/text_on_cube", "Basics/LetterBlock",
-                                                                 "Old/example010", "Basics/linear_extrude"),
-                         [](const auto& info) {
-                           const std::string path(info.param);
-                           return path.substr(path.rfind('/') + 1);
-                         });
+                                                                 "Old/example010", "Basics/linear_extrude",
+                                                                 "Advanced/offset", "Old/example008", "Old/example013"),
+                         example_name);
+
+class FlatOracle : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FlatOracle, DepthAgreesWithOpenScadsExtrusionOfIt) {
+  const std::filesystem::path scad = kExamples / (std::string(GetParam()) + ".scad");
+  if (!have_openscad() || !std::filesystem::exists(scad)) GTEST_SKIP() << "openscad or its examples not installed";
+  TempDir dir;
+  expect_flat_agreement(scad, GetParam(), dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Examples, FlatOracle, ::testing::Values("Old/example015", "Functions/recursion",
+                                                                 "Functions/list_comprehensions",
+                                                                 "Functions/polygon_areas"),
+                         example_name);
+
+// Clipped regions: a polygon that crosses itself (even-odd), offsets by
+// r, delta and chamfer, under a mirror.
+TEST(MeshOracle, ClippedRegionsAgreeWithOpenScadsStl) {
+  if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
+  TempDir dir;
+  const std::string scad = dir / "regions.scad";
+  std::ofstream(scad) << "linear_extrude(height = 4) polygon([[0, 0], [12, 12], [12, 0], [0, 12]]);\n"
+                         "translate([20, 0, 0]) linear_extrude(height = 3) offset(r = 2) square(8);\n"
+                         "translate([0, 20, 0]) linear_extrude(height = 3) offset(delta = 2, chamfer = true) "
+                         "square(8);\n"
+                         "translate([20, 20, 0]) linear_extrude(height = 5) mirror([1, 0]) difference() {\n"
+                         "  offset(delta = 1) square(10);\n  offset(r = -2) square(10);\n}\n";
+  expect_agreement(scad, "regions", dir);
+}
 
 // Straight extrusions: a frustum of a polygon with a hole, less a circle and
 // a square, beside a scaled circle: each 2-D leaf its own solid, the caps cut once.

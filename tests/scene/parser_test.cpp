@@ -513,12 +513,7 @@ TEST(ParserRefusesConstructs, UnsupportedModules) {
   };
   const Case cases[] = {
       {"rotate_extrude", "rotate_extrude() circle(1);"},
-      {"text", "text(\"hi\");"},
-      {"square", "square(2);"},
-      {"circle", "circle(2);"},
-      {"polygon", "polygon([[0, 0], [1, 0], [0, 1]]);"},
       {"projection", "projection() cube();"},
-      {"offset", "offset(r = 1) square();"},
       {"resize", "resize([1, 1, 1]) cube();"},
   };
   for (const Case& c : cases) {
@@ -537,18 +532,9 @@ TEST(ParserRefusesConstructs, UnsupportedModuleNestedInTree) {
 // extrusions that turn them into solids are not refused as if they were CSG
 // operators.
 TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
-  for (const char* shape : {"square(2);", "circle(2);", "polygon([[0, 0], [1, 0], [0, 1]]);"}) {
-    const std::string name = std::string(shape).substr(0, std::string(shape).find('('));
-    EXPECT_TRUE(Refused(shape, 1, 1,
-                        fmt::format("'{}' is not supported: a 2-D shape is drawn only extruded, under "
-                                    "linear_extrude(); capsim renders solids, and a 2-D shape alone has none; "
-                                    "supported: sphere, cube, cylinder,",
-                                    name)))
-        << shape;
-  }
-  EXPECT_TRUE(Refused("text(\"hi\");", 1, 1,
-                      "'text' is not supported: a 2-D shape is drawn only extruded, under linear_extrude()"));
-  EXPECT_TRUE(Refused("linear_extrude(1) offset(r = 1) square();", 1, 19, "'offset' is not supported: this 2-D"));
+  // 2-D shapes alone are drawn flat (tests/scene/region_2d_test.cpp).
+  for (const char* shape : {"square(2);", "circle(2);", "polygon([[0, 0], [1, 0], [0, 1]]);", "offset(1) square();"})
+    EXPECT_FALSE(parse_scene(shape, "t.csg").primitives.empty()) << shape;
   EXPECT_TRUE(Refused("projection() cube();", 1, 1, "'projection' is not supported: this 2-D construct"));
   EXPECT_TRUE(Refused("rotate_extrude() circle(1);", 1, 1,
                       "'rotate_extrude' is not supported: revolutions are not supported: capsim traces the solids "
