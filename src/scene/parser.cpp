@@ -37,7 +37,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude of square, circle, polygon, text, offset and import (DXF), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude of square, circle, polygon, text, offset, projection and import (DXF), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
@@ -61,10 +61,6 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   if (is_shape_2d(n))
     return "a 2-D shape is drawn only extruded, under linear_extrude(); capsim renders solids, and a 2-D shape "
            "alone has none";
-  for (std::string_view m : {"projection"}) {
-    if (n == m) return "this 2-D construct is not supported; capsim extrudes square, circle, polygon and text, under "
-                       "2-D transforms, union, difference and intersection";
-  }
   if (n == "rotate_extrude")
     return "revolutions are not supported: capsim traces the solids sphere, cube, cylinder, closed meshes "
            "(polyhedron, imported STL and OFF) and straight extrusions (linear_extrude), exactly";
@@ -567,10 +563,6 @@ class Interpreter {
                                                "polygon and text",
                                                name));
       }
-      if (name == "projection") {
-        unsupported_module(call, ctx);  // its children are solids
-        return std::nullopt;
-      }
       // Noted, and its 2-D children read as a dropped subtree, so that every
       // unsupported module under it is noted too.
       note(module_error(call));
@@ -612,7 +604,7 @@ class Interpreter {
   // OpenSCAD's preview draws it: 1 unit thick, centred on z = 0.
   static bool is_flat_design(const Call& call) {
     const std::string_view name = call.name;
-    if (is_shape_2d(name) || name == "offset") return true;
+    if (is_shape_2d(name) || name == "offset" || name == "projection") return true;
     if (name == "import") return scene_file::is_2d_import(call);
     if (name == "difference" || name == "intersection") return starts_2d(call);
     return false;
@@ -625,7 +617,7 @@ class Interpreter {
       bool dropped = false;
       for (const auto& m : child.modifiers) dropped = dropped || m.symbol == '%' || m.symbol == '*';
       if (dropped) continue;
-      if (is_shape_2d(child.name) || child.name == "offset") return true;
+      if (is_shape_2d(child.name) || child.name == "offset" || child.name == "projection") return true;
       if (child.name == "import") return scene_file::is_2d_import(child);
       const bool passes = is_transform(child.name) || child.name == "union" || child.name == "difference" ||
                           child.name == "intersection" || child.name == "group" || child.name == "render" ||

@@ -2,6 +2,8 @@
 
 #include "scene/region_2d.h"
 
+#include "scene/scene_projection.h"
+
 #include "capsim/scene.h"
 #include "scene/dxf_import.h"
 #include "scene/mesh_files.h"
@@ -229,8 +231,11 @@ class Evaluator {
       check_size(leaf, call);
       return leaf.sanitized ? leaf : sanitize(leaf);
     }
-    // projection() of a 3-D subtree is another leaf kind: it belongs here,
-    // returning its outline as a Polygon2d, when capsim projects solids.
+    if (name == "projection") {
+      const Polygon2d leaf = from_paths(read_projection(call, {sources_.import_dir, sources_.max_file_bytes}));
+      check_size(leaf, call);
+      return sanitize(leaf);
+    }
     if (name == "multmatrix" || name == "translate" || name == "rotate" || name == "scale" || name == "mirror") {
       std::optional<Polygon2d> s = union_of_children(call);
       if (!s) return s;
@@ -294,7 +299,7 @@ bool is_2d_import(const Call& call) {
 }
 
 bool needs_clipping(const Call& call) {
-  if (call.name == "offset") return true;
+  if (call.name == "offset" || call.name == "projection") return true;
   if (call.name == "import") return is_2d_import(call);
   if (call.name == "polygon") return paths_meet(read_polygon_paths(call, glm::dmat3(1.0)).paths);
   return false;

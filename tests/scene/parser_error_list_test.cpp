@@ -52,7 +52,7 @@ TEST(ParserErrorList, EveryUnsupportedModuleIsNamedInFileOrder) {
       "}\n"
       "translate([0, 0, -20]) linear_extrude(height = 1) difference() {\n"
       "  square(size = [40, 40], center = true);\n"
-      "  projection(cut = false) cube(1);\n"
+      "  resize([2, 2]) circle(1);\n"
       "}\n"
       "sphree(1);\n";
   const std::string what = error_of(text);

@@ -513,7 +513,6 @@ TEST(ParserRefusesConstructs, UnsupportedModules) {
   };
   const Case cases[] = {
       {"rotate_extrude", "rotate_extrude() circle(1);"},
-      {"projection", "projection() cube();"},
       {"resize", "resize([1, 1, 1]) cube();"},
   };
   for (const Case& c : cases) {
@@ -535,7 +534,8 @@ TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
   // 2-D shapes alone are drawn flat (tests/scene/region_2d_test.cpp).
   for (const char* shape : {"square(2);", "circle(2);", "polygon([[0, 0], [1, 0], [0, 1]]);", "offset(1) square();"})
     EXPECT_FALSE(parse_scene(shape, "t.csg").primitives.empty()) << shape;
-  EXPECT_TRUE(Refused("projection() cube();", 1, 1, "'projection' is not supported: this 2-D construct"));
+  EXPECT_TRUE(Refused("projection() resize([1, 1, 1]) cube();", 1, 14,
+                      "resize() under projection() is not supported: capsim projects sphere, cube"));
   EXPECT_TRUE(Refused("rotate_extrude() circle(1);", 1, 1,
                       "'rotate_extrude' is not supported: revolutions are not supported: capsim traces the solids "
                       "sphere, cube, cylinder, closed meshes (polyhedron, imported STL and OFF) and straight "
