@@ -205,14 +205,18 @@ glm::dmat3 read_transform_2d(const Call& call) {
   return p;
 }
 
-Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+double circle_radius(const Call& call) {
   Args args(call, {"r"}, {"d"});
   if (args.has("r") && args.has("d")) throw SceneError(args.name_loc("d"), "circle takes either r or d, not both");
   const std::string_view given = args.has("d") ? "d" : "r";
   const double v = args.number(given, given == "d" ? 2 : 1);
   if (!(v > 0 && v <= kMaxLength))
     args.fail_value(given, fmt::format("{} must be positive and at most 1e30, got {}", args.what(given), v));
-  const double r = given == "d" ? v / 2 : v;
+  return given == "d" ? v / 2 : v;
+}
+
+Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  const double r = circle_radius(call);
   // The cone's canonical frustum has radius r1 at z = 0 and r2 at z = 1, the
   // larger 1; at height fraction f the circle is scaled by k(f) = 1 + (s - 1) f,
   // so its centre t moves to k(f) t: a shear along z.
@@ -232,14 +236,18 @@ Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrus
   return p;
 }
 
-Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+SquareSpan read_square(const Call& call) {
   Args args(call, {"size", "center"});
   const glm::dvec2 size = number_or_vec2(args, "size", glm::dvec2(1));
   if (!(size.x > 0 && size.y > 0 && size.x <= kMaxLength && size.y <= kMaxLength))
     args.fail_value("size", fmt::format("square size must be positive (and at most 1e30) in both dimensions, got "
                                         "[{}, {}]",
                                         size.x, size.y));
-  const glm::dvec2 lo = args.boolean("center", false) ? -size / 2.0 : glm::dvec2(0);
+  return {args.boolean("center", false) ? -size / 2.0 : glm::dvec2(0), size};
+}
+
+Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  const auto [lo, size] = read_square(call);
   if (e.scale != 1) {
     const glm::dvec2 c[4] = {lo, lo + glm::dvec2(size.x, 0), lo + size, lo + glm::dvec2(0, size.y)};
     std::vector<glm::dvec2> path;
@@ -260,6 +268,13 @@ Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrus
 }
 
 ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  std::vector<Loc> path_locs;
+  const std::vector<std::vector<glm::dvec2>> paths = polygon_paths(call, plane, path_locs);
+  return extrude_paths(paths, path_locs, e, call.loc, "polygon");
+}
+
+std::vector<std::vector<glm::dvec2>> polygon_paths(const Call& call, const glm::dmat3& plane,
+                                                   std::vector<Loc>& path_locs) {
   Args args(call, {"points", "paths", "convexity"});
   args.number("convexity", 1);
   if (!args.has("points")) throw SceneError(call.loc, "polygon needs its points");
@@ -276,7 +291,7 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
     points.push_back(apply(plane, {p.items[0].number, p.items[1].number}));
   }
   std::vector<std::vector<glm::dvec2>> paths;
-  std::vector<Loc> path_locs;
+  path_locs.clear();
   if (args.has("paths")) {
     const Value& ps = args.value("paths");
     if (ps.kind != Value::Kind::Vector || ps.items.empty()) args.fail_type("paths", "a vector of paths");
@@ -301,11 +316,11 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
     paths.push_back(points);
     path_locs.push_back(pts.loc);
   }
-  return extrude_paths(paths, path_locs, e, call.loc, "polygon");
+  return paths;
 }
 
-ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
-                            const Extrusion& e, const Loc& loc, std::string_view what) {
+void check_simple_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
+                        std::string_view what) {
   for (std::size_t k = 0; k < paths.size(); ++k) {
     if (area2(paths[k]) == 0 || paths_cross(paths[k], paths[k], true))
       throw SceneError(path_locs[k], fmt::format("{} {} crosses itself or encloses no area: capsim extrudes "
@@ -318,6 +333,11 @@ ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, c
                                                    "apart or one inside another",
                                                    what, j, k));
   }
+}
+
+ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
+                            const Extrusion& e, const Loc& loc, std::string_view what) {
+  check_simple_paths(paths, path_locs, what);
   // Each path's parent: the smallest path that holds it (paths do not cross,
   // so one corner tells).
   ExtrudedPaths out;
@@ -336,6 +356,11 @@ ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, c
 constexpr std::size_t kMaxTextVertices = 20000;
 
 ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  const std::vector<std::vector<glm::dvec2>> paths = text_paths(call, plane);
+  return extrude_paths(paths, std::vector<Loc>(paths.size(), call.loc), e, call.loc, "text");
+}
+
+std::vector<std::vector<glm::dvec2>> text_paths(const Call& call, const glm::dmat3& plane) {
   Args args(call, {"text", "size", "font"},
             {"halign", "valign", "spacing", "direction", "language", "script"});
   TextSpec spec;
@@ -389,7 +414,7 @@ ExtrudedPaths extrude_text(const Call& call, const glm::dmat3& plane, const Extr
     throw SceneError(call.loc, fmt::format("text() has {} outline vertices, more than the {} capsim checks: use "
                                            "a shorter text or a smaller $fn",
                                            vertices, kMaxTextVertices));
-  return extrude_paths(paths, std::vector<Loc>(paths.size(), call.loc), e, call.loc, "text");
+  return paths;
 }
 
 }  // namespace capsim::scene_file

@@ -178,9 +178,9 @@ TEST(CliScad, ErrorsInTheExportNameTheScad) {
   SKIP_WITHOUT_OPENSCAD();
   TempDir dir;
   const std::string scad = dir / "e.scad";
-  const std::string err = refusal(dir, "e.scad", "rotate_extrude() square(3);\nsphere(1);\nhull() cube(1);\n");
+  const std::string err = refusal(dir, "e.scad", "offset(r = 1) square(3);\nsphere(1);\nhull() cube(1);\n");
   EXPECT_EQ(err.rfind((dir / "tmp") + "/capsim-scad.", 0), 0u) << err;
-  EXPECT_NE(err.find("/e.csg:1:1: 'rotate_extrude' is not supported"), std::string::npos) << err;
+  EXPECT_NE(err.find("/e.csg:1:1: 'offset' is not supported"), std::string::npos) << err;
   EXPECT_NE(err.find("/e.csg:2:2: 'square' is not supported"), std::string::npos) << err;
   EXPECT_NE(err.find("/e.csg:5:1: 'hull' is not supported"), std::string::npos) << err;
   EXPECT_NE(err.find("\n" + scad + ": the errors above are in OpenSCAD's CSG export of it"), std::string::npos)

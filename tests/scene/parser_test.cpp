@@ -512,7 +512,6 @@ TEST(ParserRefusesConstructs, UnsupportedModules) {
     const char* call;
   };
   const Case cases[] = {
-      {"rotate_extrude", "rotate_extrude() circle(1);"},
       {"hull", "hull() { sphere(); cube(); }"},
       {"minkowski", "minkowski() { sphere(); cube(); }"},
       {"text", "text(\"hi\");"},
@@ -553,10 +552,6 @@ TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
                       "'text' is not supported: a 2-D shape is drawn only extruded, under linear_extrude()"));
   EXPECT_TRUE(Refused("linear_extrude(1) offset(r = 1) square();", 1, 19, "'offset' is not supported: this 2-D"));
   EXPECT_TRUE(Refused("projection() cube();", 1, 1, "'projection' is not supported: this 2-D construct"));
-  EXPECT_TRUE(Refused("rotate_extrude() circle(1);", 1, 1,
-                      "'rotate_extrude' is not supported: revolutions are not supported: capsim traces the solids "
-                      "sphere, cube, cylinder, closed meshes (polyhedron, imported STL and OFF) and straight "
-                      "extrusions (linear_extrude), exactly; supported:"));
   EXPECT_TRUE(Refused("resize([1, 1, 1]) cube();", 1, 1,
                       "'resize' is not supported: resizing to the children's bounds is not "
                       "supported; use scale(); supported:"));
