@@ -19,16 +19,22 @@ struct ProfileLine {
   double rho2(double s) const { return (a * s + 2 * b) * s + c; }
 };
 
-// An edge's surface: points whose (rho, z) lies on ab, at s in [0, 1) along
-// it. The half-open edge claims a shared corner once, for the edge leaving it.
+// An edge's surface: points whose (rho, z) lies on ab, at f in [0, 1) along
+// it. The half-open edge claims a shared corner once, for the edge leaving it;
+// but an edge that ends on the axis is closed there, as the edge that leaves
+// the axis point next either runs along the axis (and is no surface) or
+// claims the point too (two cones meeting at an apex: two crossings at one t,
+// which cancel).
 void edge_crossings(const RevolvedEdge& e, int surface, const ProfileLine& l, std::vector<LineCrossing>& out) {
+  const bool closed_end = e.b.x == 0;
+  auto on_edge = [&](double f) { return f >= 0 && (f < 1 || (closed_end && f == 1)); };
   const double ez = e.b.y - e.a.y;
   if (ez == 0) {
     // An annulus in the plane z = a.y.
     if (l.dz == 0) return;
     const double s = (e.a.y - l.oz) / l.dz;
     const double f = (std::sqrt(std::max(l.rho2(s), 0.0)) - e.a.x) / (e.b.x - e.a.x);
-    if (f >= 0 && f < 1) out.push_back({s, surface, false});
+    if (on_edge(f)) out.push_back({s, surface, false});
     return;
   }
   // rho = w(s) = w0 + w1 s along the cone through the edge: rho^2 - w^2 = 0.
@@ -41,14 +47,15 @@ void edge_crossings(const RevolvedEdge& e, int surface, const ProfileLine& l, st
   const int n = real_roots(q, roots);
   for (int i = 0; i < n; ++i) {
     const double f = (l.oz + l.dz * roots[i] - e.a.y) / ez;
-    if (f >= 0 && f < 1) out.push_back({roots[i], surface, false});
+    if (on_edge(f)) out.push_back({roots[i], surface, false});
   }
 }
 
 // An ellipse's surface: (u - c)^T A (u - c) = 1 with u = (rho, z) is
 // P(s) + rho(s) L(s) = 0, P quadratic and L linear in s. Squared, P^2 -
 // rho^2 L^2 = 0 is a quartic; its roots where P = +rho L belong to the mirror
-// image at -rho and are dropped. Each root is then polished by Newton steps on
+// image at -rho and are dropped (when L vanishes, P = 0 alone is solved).
+// Each root is then polished by Newton steps on
 // the unsquared P + rho L, which squaring had made less precise.
 void ellipse_crossings(const ProfileEllipse& e, int surface, const ProfileLine& l, std::vector<LineCrossing>& out) {
   const double a11 = e.form[0][0], a12 = e.form[1][0], a22 = e.form[1][1];
@@ -62,9 +69,17 @@ void ellipse_crossings(const ProfileEllipse& e, int surface, const ProfileLine& 
   const std::array<double, 3> r2 = {l.c, 2 * l.b, l.a};
   const std::array<double, 3> l2 = {lin[0] * lin[0], 2 * lin[0] * lin[1], lin[1] * lin[1]};
   Polynomial q;
-  q.degree = 4;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) q.c[i + j] += p[i] * p[j] - r2[i] * l2[j];
+  if (lin[0] == 0 && lin[1] == 0) {
+    // An ellipse centred on the axis, its axes along r and z (a spheroid):
+    // L vanishes and the surface is the quadric P = 0, whose roots the
+    // square P^2 would only touch.
+    q.degree = 2;
+    q.c = {p[0], p[1], p[2], 0, 0};
+  } else {
+    q.degree = 4;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) q.c[i + j] += p[i] * p[j] - r2[i] * l2[j];
+  }
   std::array<double, 4> roots{};
   const int n = real_roots(q, roots);
   auto P = [&](double s) { return (p[2] * s + p[1]) * s + p[0]; };

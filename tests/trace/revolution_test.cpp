@@ -248,6 +248,13 @@ TEST(Revolution, TheTwoDTreeIsTheSolidsTreeAndOnlyXAtLeastZeroIsTurned) {
   const std::string dome = "rotate_extrude() intersection() { square(5); circle(5); }";
   EXPECT_NEAR(from_above(dome, 2, 0), 100 - std::sqrt(21.0), 1e-12);
   EXPECT_NEAR(from_above(dome, 0, -3), 96, 1e-12);
+  // A spheroid (an ellipse centred on the axis, as example017's bottle has):
+  // z = 2 sqrt(1 - r^2 / 16) over every radius, off any grid line.
+  const std::string spheroid = "rotate_extrude() intersection() { square([4, 4]); scale([1, 0.5, 1]) circle(4); }";
+  for (const double r : {0.0, 0.7, 2.0, 3.3, 3.9}) {
+    const double x = r * 0.6, y = r * 0.8;
+    EXPECT_NEAR(from_above(spheroid, x, y), 100 - 2 * std::sqrt(1 - r * r / 16), 1e-12) << r;
+  }
   // A tube less a torus in its wall, and a polygon that touches the axis.
   const std::string grooved = "rotate_extrude() difference() { translate([10, 0, 0]) square(5); "
                               "translate([12.5, 5, 0]) circle(1); }";
@@ -256,6 +263,16 @@ TEST(Revolution, TheTwoDTreeIsTheSolidsTreeAndOnlyXAtLeastZeroIsTurned) {
   const std::string cone = "rotate_extrude() polygon([[0, 0], [4, 0], [0, 8]]);";
   EXPECT_NEAR(from_above(cone, 2, 0), 96, 1e-12);
   EXPECT_NEAR(from_above(cone, 0, 1), 94, 1e-12);
+  // Exactly down the axis, where the profile's edges end on it: the top disc
+  // of a solid cylinder, the apex of the cone, and nothing through the
+  // hourglass hollow but the point where its two cones meet.
+  EXPECT_EQ(from_above("rotate_extrude() square(4);", 0, 0), 96);
+  EXPECT_EQ(from_above(cone, 0, 0), 92);
+  OpCounts ops;
+  const auto c = crossings("rotate_extrude() polygon([[4, 10], [0, 5], [4, 0]]);", {0, 0, 100}, {0, 0, -1}, ops);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].t, 95);
+  EXPECT_EQ(c[1].t, 95);
 }
 
 TEST(Revolution, TextIsTurnedAsItsGlyphsOutlines) {
