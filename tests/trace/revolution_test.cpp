@@ -300,6 +300,15 @@ TEST(Revolution, BadInputIsRefusedAtItsPlace) {
             std::string::npos);
   EXPECT_NE(refusal("rotate_extrude() square(0);").find("t.csg:1:25: square size must be positive"), std::string::npos);
   EXPECT_NE(refusal("rotate_extrude() cube(1);").find("t.csg:1:18: cube() is not a 2-D shape"), std::string::npos);
+  EXPECT_EQ(refusal("rotate_extrude() !square(1);"),
+            "t.csg:1:18: the '!' (root) modifier is not supported inside rotate_extrude()");
+  EXPECT_EQ(refusal("rotate_extrude() import(\"a.dxf\");"),
+            "t.csg:1:18: import() under rotate_extrude() reads a 2-D file (DXF, SVG), which is not supported; capsim "
+            "extrudes square, circle, polygon and text");
+  // A shape left out with '%' is read and checked, and decides no side.
+  EXPECT_EQ(refusal("rotate_extrude() { square(1); %translate([-5, 0, 0]) square(1); }"), "parsed without error");
+  EXPECT_NE(refusal("rotate_extrude() { square(1); %square(-1); }").find("t.csg:1:39: square size must be positive"),
+            std::string::npos);
   // A circle that touches the axis is allowed (a horn torus).
   EXPECT_EQ(refusal("rotate_extrude() translate([5, 0, 0]) circle(5);"), "parsed without error");
 }
