@@ -38,11 +38,11 @@ const char* json_key(CostCategory c);   // kCostCategoryTable's json_key
 enum class CostPayer { Cell, Host };
 
 enum class CostTerm {
-  SphereTest, ConeTest, BoxTest, MeshTest, MeshNodeTest, TriangleTest, DdaSetup, DdaStep, VoxelVisit, Matvec, VoxelPass, TreeVisit, HitSort,
+  SphereTest, ConeTest, BoxTest, MeshTest, MeshNodeTest, TriangleTest, RevolutionTest, RevolutionEdgeTest, QuarticTest, DdaSetup, DdaStep, VoxelVisit, Matvec, VoxelPass, TreeVisit, HitSort,
   ShadingEval, RayOther, AaSquare, PixelWrite,
   HostPrimitive, HostMatmat, HostMatvec, HostColumn, HostEntry, HostGridVoxel,
 };
-inline constexpr int kCostTermCount = 23;
+inline constexpr int kCostTermCount = 26;
 
 // Where the shipped profiles' value of a term comes from.
 enum class CostSource {
@@ -87,6 +87,15 @@ inline constexpr std::array<CostTermInfo, kCostTermCount> kCostTerms = {{
      "test", CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.mesh_node_tests; }, nullptr},
     {CostTerm::TriangleTest, CostPayer::Cell, "triangle_test", CostCategory::Intersection, "triangle tests",
      "test", CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.triangle_tests; }, nullptr},
+    // A revolution leaf (docs/calibration.md): the ray carried into its space
+    // once, then a quadratic per profile edge and a quartic per ellipse.
+    {CostTerm::RevolutionTest, CostPayer::Cell, "revolution_test", CostCategory::Intersection, "revolution tests",
+     "test", CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.revolution_tests; }, nullptr},
+    {CostTerm::RevolutionEdgeTest, CostPayer::Cell, "revolution_edge_test", CostCategory::Intersection,
+     "revolved edge tests", "test", CostSource::Reasoned,
+     [](const OpCounts& o, std::uint64_t) { return o.revolution_edge_tests; }, nullptr},
+    {CostTerm::QuarticTest, CostPayer::Cell, "quartic_test", CostCategory::Intersection, "revolved ellipse tests",
+     "test", CostSource::Reasoned, [](const OpCounts& o, std::uint64_t) { return o.quartic_tests; }, nullptr},
     {CostTerm::DdaSetup, CostPayer::Cell, "dda_setup", CostCategory::Dda, "3DDDA set-ups", "set-up",
      CostSource::Table41, [](const OpCounts& o, std::uint64_t) { return o.dda_setups; }, nullptr},
     {CostTerm::DdaStep, CostPayer::Cell, "dda_step", CostCategory::Dda, "3DDDA steps", "step", CostSource::Table41,

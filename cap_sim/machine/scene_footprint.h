@@ -7,6 +7,10 @@
 //   mesh, per primitive that is one: vertex 3 x 4 each; triangle 3 x 4
 //                     indices + 3 x 4 normal + 4 in the hierarchy's order
 //                     = 28 each; hierarchy node 6 x 4 box + 2 x 4 = 32 each
+//   revolution, per primitive that is one: sweep, edge and ellipse counts
+//                     3 x 4 + box 6 x 4 = 36; profile edge 2 ends, outward
+//                     normal 6 x 4 = 24 each; ellipse centre 2 + form 3
+//                     (symmetric) = 20 each
 //   status-tree node: operator 1 + flags 1 (left child?, self, left, right)
 //                     + padding 2 + parent index 4                       =   8 bytes
 //   status-tree leaf: parent index 4 + flags 4 (per primitive)           =   8 bytes
@@ -26,6 +30,9 @@ inline constexpr std::uint64_t kPrimitiveRecordBytes = 120;
 inline constexpr std::uint64_t kMeshVertexBytes = 12;
 inline constexpr std::uint64_t kMeshTriangleBytes = 28;
 inline constexpr std::uint64_t kMeshNodeBytes = 32;
+inline constexpr std::uint64_t kRevolutionHeaderBytes = 36;
+inline constexpr std::uint64_t kRevolvedEdgeBytes = 24;
+inline constexpr std::uint64_t kRevolvedEllipseBytes = 20;
 inline constexpr std::uint64_t kStatusNodeBytes = 8;
 inline constexpr std::uint64_t kStatusLeafBytes = 8;
 inline constexpr std::uint64_t kGridHeaderBytes = 28;
@@ -35,7 +42,7 @@ inline constexpr std::uint64_t kLightBytes = 24;
 inline constexpr std::uint64_t kBackgroundBytes = 12;
 
 struct SceneFootprint {
-  std::uint64_t primitives = 0;   // primitive records, and the meshes' data
+  std::uint64_t primitives = 0;   // primitive records, and the meshes' and revolutions' data
   std::uint64_t status_tree = 0;  // operator nodes and leaves
   std::uint64_t view = 0;         // camera, lights, background
   std::uint64_t voxel_grid = 0;   // header, offsets, items

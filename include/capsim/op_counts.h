@@ -14,6 +14,9 @@ struct OpCounts {
   std::uint64_t mesh_tests = 0;     // ray-mesh intersections: the ray carried into the mesh's space
   std::uint64_t mesh_node_tests = 0;  // boxes of a mesh's hierarchy tested against the ray
   std::uint64_t triangle_tests = 0;   // mesh triangles tested against the ray
+  std::uint64_t revolution_tests = 0;  // ray-revolution intersections: the ray carried into its space
+  std::uint64_t revolution_edge_tests = 0;  // profile edges (cone, cylinder, annulus) tested
+  std::uint64_t quartic_tests = 0;     // profile ellipses (tori) tested: a quartic's real roots
   std::uint64_t dda_setups = 0;     // Algorithm-2 set-ups (one per ray that meets the universe)
   std::uint64_t dda_steps = 0;      // Algorithm-2 voxel steps
   std::uint64_t voxel_passes = 0;   // partial evaluation: voxels visited that hold primitives,
@@ -31,7 +34,9 @@ struct OpCounts {
   std::uint64_t aa_squares = 0;      // antialiasing: squares whose corners were compared
                                      // with the threshold and averaged
 
-  std::uint64_t intersection_tests() const { return sphere_tests + cone_tests + box_tests + mesh_tests; }
+  std::uint64_t intersection_tests() const {
+    return sphere_tests + cone_tests + box_tests + mesh_tests + revolution_tests;
+  }
   OpCounts& operator+=(const OpCounts& o);
   friend OpCounts operator+(OpCounts a, const OpCounts& b) { return a += b; }
   bool operator==(const OpCounts&) const = default;

@@ -7,6 +7,7 @@
 #include "capsim/mesh_geometry.h"
 #include "capsim/op_counts.h"
 #include "capsim/ray.h"
+#include "capsim/revolution_geometry.h"
 #include "capsim/scene.h"
 
 namespace capsim {
@@ -28,17 +29,26 @@ struct alignas(64) PreparedPrimitive {
   double cone_r1 = 1, cone_r2 = 1;
   Aabb world_bounds;                // the 8 corners of the object box, transformed
   std::shared_ptr<const MeshHierarchy> mesh;  // Mesh only
+  std::shared_ptr<const Revolution> revolution;  // Revolution only
 };
 
 PreparedPrimitive prepare_primitive(const Primitive& p);
 
 // The object-space bounding box of a prepared primitive (scene.h's object_bounds).
 inline Aabb object_bounds(const PreparedPrimitive& p) {
+  if (p.kind == PrimitiveKind::Revolution) return p.revolution->bounds;
   return p.kind == PrimitiveKind::Mesh ? p.mesh->mesh->bounds : object_bounds(p.kind);
 }
 
+// Whether a line meets the primitive in any number of intervals (leaf_crossings)
+// rather than in one (intersect_line).
+inline bool has_many_intervals(PrimitiveKind kind) {
+  return kind == PrimitiveKind::Mesh || kind == PrimitiveKind::Revolution;
+}
+
 // Which surface of the primitive a crossing lies on (box: face 0..5 as -x,+x,-y,+y,
-// -z,+z; cone: 0 side, 1 cap z=0, 2 cap z=1; sphere: 0; mesh: its triangle).
+// -z,+z; cone: 0 side, 1 cap z=0, 2 cap z=1; sphere: 0; mesh: its triangle;
+// revolution: as Revolution numbers them).
 using SurfaceId = int;
 
 struct LineSpan {
@@ -49,7 +59,7 @@ struct LineSpan {
 };
 
 // Intersects the whole line origin + t dir (ignoring tmin/tmax) with a convex
-// solid (not a Mesh). Returns false when the line misses or only grazes it (an
+// solid (not a Mesh or a Revolution). Returns false when the line misses or only grazes it (an
 // empty or one-point interval). Counts one test of the primitive's kind; its
 // cost, as in the paper's Table 4-1, includes carrying the ray into object space.
 bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& span,
@@ -59,6 +69,16 @@ bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& 
 // sorted, entries and exits alternating from an entry. Counts one mesh test (the
 // ray carried into the mesh's space) and the work mesh_line_crossings counts.
 void mesh_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
+                    std::vector<LineCrossing>& work, OpCounts& ops);
+
+// The crossings of the whole line with a Revolution (revolution_line_crossings),
+// sorted, alternating from an entry. Counts one revolution test (the ray
+// carried into its space) and the work revolution_line_crossings counts.
+void revolution_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
+                          std::vector<LineCrossing>& work, OpCounts& ops);
+
+// The crossings of a primitive with many intervals (has_many_intervals).
+void leaf_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
                     std::vector<LineCrossing>& work, OpCounts& ops);
 
 // The primitive's outward unit normal, in world space, at a world point on surface s.

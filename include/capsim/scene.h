@@ -4,6 +4,7 @@
 // the planar faces of meshes); nothing is tessellated.
 
 #include "capsim/bounds.h"
+#include "capsim/revolution.h"
 #include "capsim/triangle_mesh.h"
 
 #include <glm/glm.hpp>
@@ -40,13 +41,15 @@ class SceneError : public std::runtime_error {
 
 // The paper's three primitive kinds, and closed triangle meshes. Cone covers
 // OpenSCAD's cylinder: equal radii give a cylinder, r2 = 0 a pointed cone.
-// Mesh covers polyhedron() and imported STL and OFF solids.
-enum class PrimitiveKind { Sphere, Box, Cone, Mesh };
+// Mesh covers polyhedron() and imported STL and OFF solids; Revolution
+// rotate_extrude's turned profiles (revolution.h).
+enum class PrimitiveKind { Sphere, Box, Cone, Mesh, Revolution };
 const char* to_string(PrimitiveKind kind);
 
 // The object-space bounding box of a canonical convex primitive (before
 // to_world): the unit sphere, the unit cube [0,1]^3, the frustum 0 <= z <= 1
-// of radius at most 1. A mesh's is its own (object_bounds of the primitive).
+// of radius at most 1. A mesh's and a revolution's are their own
+// (object_bounds of the primitive).
 Aabb object_bounds(PrimitiveKind kind);
 
 struct Material {
@@ -65,19 +68,22 @@ struct Material {
 //   Cone:   the frustum 0 <= z <= 1 with radius r(z) = cone_r1 + (cone_r2 - cone_r1) z,
 //           where max(cone_r1, cone_r2) = 1 and both caps are closed.
 //   Mesh:   the closed triangle mesh `mesh`, in its own coordinates.
+//   Revolution: the turned profile `revolution`, about the z axis.
 struct Primitive {
   PrimitiveKind kind = PrimitiveKind::Sphere;
   glm::dmat4 to_world{1.0};  // object -> world; invertible (the parser refuses singular ones)
   double cone_r1 = 1;
   double cone_r2 = 1;
   std::shared_ptr<const TriangleMesh> mesh;  // Mesh only; shared by the frames of an animation
+  std::shared_ptr<const Revolution> revolution;  // Revolution only
   glm::dvec3 color{0.946, 0.679, 0.025};  // linear RGB albedo: OpenSCAD's default #f9d72c, decoded
   double alpha = 1;
   Material material;
   SourceLoc loc;
 };
 
-// The object-space bounding box of a primitive: object_bounds(kind), or a mesh's own.
+// The object-space bounding box of a primitive: object_bounds(kind), or a mesh's or
+// a revolution's own.
 Aabb object_bounds(const Primitive& p);
 
 enum class CsgOp { Union, Intersection, Difference };

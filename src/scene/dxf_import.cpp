@@ -283,23 +283,9 @@ class Reader {
                                                     o_.layer));
     std::map<int, int> enabled;
     for (std::size_t i = 0; i < lines_.size(); ++i) enabled[static_cast<int>(i)] = static_cast<int>(i);
-    // A segment end no other segment shares starts an open contour.
-    for (const auto& [_, idx] : enabled)
-      for (int j = 0; j < 2; ++j) {
-        const glm::dvec2 p = points_[static_cast<std::size_t>(lines_[idx].idx[j])];
-        double x = p.x, y = p.y;
-        bool shared = false;
-        for (int k : grid_.align(x, y))
-          if (k != idx && static_cast<std::size_t>(k) < lines_.size() && !lines_[k].disabled) shared = true;
-        if (!shared)
-          fail(lines_[idx].dxf_line, fmt::format("the outline through ({:g}, {:g}) is open: it ends there (OpenSCAD "
-                                                 "closes it with a straight edge the drawing does not have)",
-                                                 p.x, p.y));
-      }
-    Polygon2d shape;
-    while (!enabled.empty()) {
-      int current = enabled.begin()->second;
-      int end = 0;
+    // The contour from segment `current`, entered at its end `end`, followed
+    // until no segment continues it; its point indices in order.
+    auto follow = [&](int current, int end) {
       std::vector<int> indices{lines_[current].idx[end]};
       for (;;) {
         indices.push_back(lines_[current].idx[!end]);
@@ -319,11 +305,32 @@ class Reader {
         }
         if (!found) break;
       }
+      return indices;
+    };
+    // OpenSCAD's toPolygon2d: the points in reverse order; a closed contour
+    // comes back to its first point, which is not repeated.
+    Polygon2d shape;
+    auto add = [&](const std::vector<int>& indices, bool closed) {
       Outline2d outline;
-      for (std::size_t j = 1; j < indices.size(); ++j)
+      const std::size_t last = closed ? indices.size() - 1 : indices.size();
+      for (std::size_t j = 1; j <= last; ++j)
         outline.vertices.push_back(points_[static_cast<std::size_t>(indices[indices.size() - j])]);
       shape.outlines.push_back(std::move(outline));
-    }
+    };
+    // Open contours first, each from a segment end no other segment shares.
+    // OpenSCAD closes them with a straight edge from their last point to
+    // their first (a profile for rotate_extrude drawn up to the axis is one).
+    for (std::size_t i = 0; i < lines_.size(); ++i)
+      for (int j = 0; j < 2 && !lines_[i].disabled; ++j) {
+        const glm::dvec2 p = points_[static_cast<std::size_t>(lines_[i].idx[j])];
+        double x = p.x, y = p.y;
+        bool shared = false;
+        for (int k : grid_.align(x, y))
+          if (k != static_cast<int>(i) && static_cast<std::size_t>(k) < lines_.size() && !lines_[k].disabled)
+            shared = true;
+        if (!shared) add(follow(static_cast<int>(i), j), false);
+      }
+    while (!enabled.empty()) add(follow(enabled.begin()->second, 0), true);
     return shape;
   }
 

@@ -27,6 +27,7 @@
 #include "scene/scene_meshes.h"
 #include "scene/scene_modules.h"
 #include "scene/scene_surface.h"
+#include "scene/scene_revolve.h"
 #include "scene/scene_syntax.h"
 #include "scene/region_2d.h"
 
@@ -37,7 +38,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude of square, circle, polygon, text, offset, projection and import (DXF), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection and import (DXF), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
@@ -51,7 +52,7 @@ bool is_point_hull(std::string_view n) { return n == "hull" || n == "minkowski";
 bool is_setting(std::string_view n) { return n == "camera" || n == "light" || n == "background"; }
 bool is_shape_2d(std::string_view n) { return n == "square" || n == "circle" || n == "polygon" || n == "text"; }
 bool is_object(std::string_view n) {
-  return is_primitive(n) || n == "linear_extrude" || is_transform(n) || n == "union" || n == "difference" ||
+  return is_primitive(n) || n == "linear_extrude" || n == "rotate_extrude" || is_transform(n) || n == "union" || n == "difference" ||
          n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
 }
 
@@ -61,9 +62,6 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   if (is_shape_2d(n))
     return "a 2-D shape is drawn only extruded, under linear_extrude(); capsim renders solids, and a 2-D shape "
            "alone has none";
-  if (n == "rotate_extrude")
-    return "revolutions are not supported: capsim traces the solids sphere, cube, cylinder, closed meshes "
-           "(polyhedron, imported STL and OFF) and straight extrusions (linear_extrude), exactly";
   for (std::string_view m : {"hull", "minkowski"}) {
     if (n == m) return "capsim takes hull() and minkowski() of solids, not of 2-D shapes";
   }
@@ -81,7 +79,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
                                             *reason, kSupported));
   }
   std::vector<std::string> known;
-  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "surface", "hull", "minkowski", "linear_extrude", "multmatrix", "translate", "rotate",
+  for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "surface", "hull", "minkowski", "linear_extrude", "rotate_extrude", "offset", "projection", "multmatrix", "translate", "rotate",
                              "scale", "mirror", "union", "difference", "intersection", "group",
                              "render", "color", "material", "camera", "light", "background"}) {
     known.emplace_back(n);
@@ -304,6 +302,7 @@ class Interpreter {
       return std::nullopt;
     }
     if (name == "linear_extrude") return extrusion(call, ctx);
+    if (name == "rotate_extrude") return revolution(call, ctx);
     if (is_transform(name) || name == "color" || name == "material") {
       const ContextId inner = enter(call, ctx);
       CsgNode node = pass_through_children(call, inner);
@@ -499,6 +498,21 @@ class Interpreter {
     return scene_file::extrusion_slices(bottom, e);
   }
 
+  // rotate_extrude: its 2-D tree as a 3-D one over revolved leaves
+  // (scene_revolve.h), each leaf exact and the wedge part of each.
+  [[gnu::noinline]] std::optional<CsgNode> revolution(const Call& call, ContextId ctx) {
+    const scene_file::Revolve r = scene_file::read_rotate_extrude(call);
+    revolve_ = r;
+    std::vector<CsgNode> kids;
+    for (const Call& child : call.children)
+      if (auto node = shape(child, ctx, glm::dmat3(1.0), scene_file::Extrusion{})) kids.push_back(std::move(*node));
+    revolve_.reset();
+    if (kids.empty()) return empty_union(call.loc);
+    CsgNode tree = pass_through(call, std::move(kids));
+    scene_file::finish_revolution(tree, all_primitives_, r, call.loc);
+    return tree;
+  }
+
   // The 2-D leaves under an extrusion that are drawn (a polygon with holes
   // counts each path).
   static int shape_leaves(std::span<const Call> shapes) {
@@ -523,7 +537,8 @@ class Interpreter {
                                const scene_file::Extrusion& e) {
     for (const auto& m : call.modifiers) {
       if (m.symbol == '!')
-        throw SceneError(m.loc, "the '!' (root) modifier is not supported inside linear_extrude()");
+        throw SceneError(m.loc, fmt::format("the '!' (root) modifier is not supported inside {}()",
+                                            revolve_ ? "rotate_extrude" : "linear_extrude"));
       if (m.symbol == '%' || m.symbol == '*') {
         // Read and checked, then left out.
         shape_node(call, push_dropped(ctx), plane, e);
@@ -538,6 +553,10 @@ class Interpreter {
                                                       const scene_file::Extrusion& e) {
     const std::string_view name = call.name;
     if (scene_file::needs_clipping(call)) return clipped_node(call, ctx, plane, e);
+    if (revolve_ && is_shape_2d(name)) {
+      no_children(call);
+      return place(scene_file::revolve_shape(call, plane, *revolve_), call, ctx);
+    }
     if (name == "circle" || name == "square") {
       no_children(call);
       return place(name == "circle" ? scene_file::extrude_circle(call, plane, e)
@@ -555,13 +574,15 @@ class Interpreter {
                           name == "render";
     if (!is_group && !is_transform(name) && name != "color" && name != "material") {
       if (name == "import") {
-        throw SceneError(call.loc, "import() under linear_extrude() reads a 2-D file (DXF, SVG), which is not "
-                                   "supported; capsim extrudes square, circle, polygon and text");
+        throw SceneError(call.loc, fmt::format("import() of a mesh (STL, OFF) is not a 2-D shape: {}() extrudes "
+                                               "square, circle, polygon, text, offset, projection and 2-D imports "
+                                               "(DXF)",
+                                               revolve_ ? "rotate_extrude" : "linear_extrude"));
       }
       if (is_object(name) || is_setting(name)) {
-        throw SceneError(call.loc, fmt::format("{}() is not a 2-D shape: linear_extrude() extrudes square, circle, "
+        throw SceneError(call.loc, fmt::format("{}() is not a 2-D shape: {}() extrudes square, circle, "
                                                "polygon and text",
-                                               name));
+                                               name, revolve_ ? "rotate_extrude" : "linear_extrude"));
       }
       // Noted, and its 2-D children read as a dropped subtree, so that every
       // unsupported module under it is noted too.
@@ -597,6 +618,9 @@ class Interpreter {
   [[gnu::noinline]] CsgNode clipped_node(const Call& call, ContextId ctx, const glm::dmat3& plane,
                                          const scene_file::Extrusion& e) {
     const scene_file::NestedPaths region = scene_file::nested_region_paths(call, plane, {import_dir_, max_file_bytes_});
+    if (revolve_) {
+      return place(scene_file::revolve_region(region.paths, *revolve_, call.loc), call, ctx);
+    }
     return polygon_node(call, scene_file::extrude_nested_paths(region.paths, region.parent, e, call.loc), ctx);
   }
 
@@ -676,6 +700,7 @@ class Interpreter {
   Scene scene_;
   std::vector<Primitive> all_primitives_;  // including those of dropped subtrees
   std::optional<CsgNode> root_;            // the '!' subtree, if any
+  std::optional<scene_file::Revolve> revolve_;  // inside rotate_extrude: its 2-D leaves are turned
   Loc root_loc_;
   std::optional<Loc> camera_loc_;
   std::optional<Loc> background_loc_;

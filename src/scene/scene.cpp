@@ -23,6 +23,7 @@ const char* to_string(PrimitiveKind kind) {
     case PrimitiveKind::Box: return "box";
     case PrimitiveKind::Cone: return "cone";
     case PrimitiveKind::Mesh: return "mesh";
+    case PrimitiveKind::Revolution: return "revolution";
   }
   return "?";
 }
@@ -36,12 +37,14 @@ Aabb object_bounds(PrimitiveKind kind) {
     case PrimitiveKind::Cone:
       return {glm::dvec3(-1, -1, 0), glm::dvec3(1, 1, 1)};
     case PrimitiveKind::Mesh:
+    case PrimitiveKind::Revolution:
       break;
   }
   return {};
 }
 
 Aabb object_bounds(const Primitive& p) {
+  if (p.kind == PrimitiveKind::Revolution) return p.revolution->bounds;
   return p.kind == PrimitiveKind::Mesh ? p.mesh->bounds : object_bounds(p.kind);
 }
 

@@ -235,14 +235,18 @@ glm::dmat3 read_transform_2d(const Call& call) {
   return p;
 }
 
-Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+double circle_radius(const Call& call) {
   Args args(call, {"r"}, {"d"});
   if (args.has("r") && args.has("d")) throw SceneError(args.name_loc("d"), "circle takes either r or d, not both");
   const std::string_view given = args.has("d") ? "d" : "r";
   const double v = args.number(given, given == "d" ? 2 : 1);
   if (!(v > 0 && v <= kMaxLength))
     args.fail_value(given, fmt::format("{} must be positive and at most 1e30, got {}", args.what(given), v));
-  const double r = given == "d" ? v / 2 : v;
+  return given == "d" ? v / 2 : v;
+}
+
+Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  const double r = circle_radius(call);
   if (e.curved()) {
     // No closed form: the circle is OpenSCAD's polygon of it.
     std::vector<glm::dvec2> path;
@@ -269,14 +273,18 @@ Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrus
   return p;
 }
 
-Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+SquareSpan read_square(const Call& call) {
   Args args(call, {"size", "center"});
   const glm::dvec2 size = number_or_vec2(args, "size", glm::dvec2(1));
   if (!(size.x > 0 && size.y > 0 && size.x <= kMaxLength && size.y <= kMaxLength))
     args.fail_value("size", fmt::format("square size must be positive (and at most 1e30) in both dimensions, got "
                                         "[{}, {}]",
                                         size.x, size.y));
-  const glm::dvec2 lo = args.boolean("center", false) ? -size / 2.0 : glm::dvec2(0);
+  return {args.boolean("center", false) ? -size / 2.0 : glm::dvec2(0), size};
+}
+
+Primitive extrude_square(const Call& call, const glm::dmat3& plane, const Extrusion& e) {
+  const auto [lo, size] = read_square(call);
   if (e.scale != 1 || e.curved()) {
     const glm::dvec2 c[4] = {lo, lo + glm::dvec2(size.x, 0), lo + size, lo + glm::dvec2(0, size.y)};
     std::vector<glm::dvec2> path;
@@ -347,8 +355,8 @@ ExtrudedPaths extrude_polygon(const Call& call, const glm::dmat3& plane, const E
   return extrude_paths(p.paths, p.locs, e, call.loc, "polygon");
 }
 
-ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
-                            const Extrusion& e, const Loc& loc, std::string_view what) {
+void check_simple_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
+                        std::string_view what) {
   for (std::size_t k = 0; k < paths.size(); ++k) {
     if (area2(paths[k]) == 0 || paths_cross(paths[k], paths[k], true))
       throw SceneError(path_locs[k], fmt::format("{} {} crosses itself or encloses no area: capsim extrudes "
@@ -361,6 +369,11 @@ ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, c
                                                    "apart or one inside another",
                                                    what, j, k));
   }
+}
+
+ExtrudedPaths extrude_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
+                            const Extrusion& e, const Loc& loc, std::string_view what) {
+  check_simple_paths(paths, path_locs, what);
   // Each path's parent: the smallest path that holds it (paths do not cross,
   // so one corner tells).
   ExtrudedPaths out;

@@ -62,6 +62,18 @@ inline constexpr int kMaxSlices = 100000;
 // 3-D matrix, refused when it flattens the plane.
 glm::dmat3 read_transform_2d(const Call& call);
 
+// circle's radius (r or d/2) and square's corner and size, checked.
+double circle_radius(const Call& call);
+struct SquareSpan {
+  glm::dvec2 lo, size;
+};
+SquareSpan read_square(const Call& call);
+
+// Refuses paths that cross themselves or each other and paths of no area,
+// at the path's place; `what` names the shape.
+void check_simple_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
+                        std::string_view what);
+
 // The extruded solid of a circle or a square placed by `plane` in extrusion
 // space (to_world is the extrusion's, before the enclosing 3-D transforms).
 Primitive extrude_circle(const Call& call, const glm::dmat3& plane, const Extrusion& e);

@@ -164,6 +164,7 @@ PreparedPrimitive prepare_primitive(const Primitive& prim) {
   p.cone_r1 = prim.cone_r1;
   p.cone_r2 = prim.cone_r2;
   if (p.kind == PrimitiveKind::Mesh) p.mesh = std::make_shared<const MeshHierarchy>(build_mesh_hierarchy(prim.mesh));
+  p.revolution = prim.revolution;
   for (const glm::dvec3& c : box_corners(object_bounds(p)))
     p.world_bounds.extend(transform_point(p.to_world, c));
   if (p.kind == PrimitiveKind::Sphere) {
@@ -198,6 +199,7 @@ bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& 
       ++ops.cone_tests;
       return intersect_cone(o, d, p.cone_r1, p.cone_r2, span);
     case PrimitiveKind::Mesh:
+    case PrimitiveKind::Revolution:
       break;
   }
   return false;
@@ -208,6 +210,22 @@ void mesh_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vecto
   ++ops.mesh_tests;
   mesh_line_crossings(*p.mesh, transform_point(p.to_object, world_ray.origin),
                       transform_vector(p.to_object, world_ray.dir), out, work, ops);
+}
+
+void revolution_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
+                          std::vector<LineCrossing>& work, OpCounts& ops) {
+  ++ops.revolution_tests;
+  revolution_line_crossings(*p.revolution, transform_point(p.to_object, world_ray.origin),
+                            transform_vector(p.to_object, world_ray.dir), out, work, ops);
+}
+
+void leaf_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
+                    std::vector<LineCrossing>& work, OpCounts& ops) {
+  if (p.kind == PrimitiveKind::Revolution) {
+    revolution_crossings(p, world_ray, out, work, ops);
+  } else {
+    mesh_crossings(p, world_ray, out, work, ops);
+  }
 }
 
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
@@ -246,6 +264,10 @@ glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_poin
       break;
     case PrimitiveKind::Mesh:
       n = p.mesh->face_normals[static_cast<std::size_t>(s)];
+      break;
+    case PrimitiveKind::Revolution:
+      ++ops.matvec;
+      n = revolution_normal(*p.revolution, transform_point(p.to_object, world_point), s);
       break;
   }
   ++ops.matvec;

@@ -30,9 +30,9 @@ void check_scene_range(const Scene& scene, const std::vector<PreparedPrimitive>&
     const char* kind = to_string(p.kind);
     // The prepared primitive holds the inverse placement already.
     double stretch = 1 / largest_stretch(glm::dmat3(prims[i].to_object));
-    if (p.kind == PrimitiveKind::Mesh) {
-      // A mesh's size is in its own coordinates, not in its placement.
-      const glm::dvec3 e = p.mesh->bounds.extent();
+    if (p.kind == PrimitiveKind::Mesh || p.kind == PrimitiveKind::Revolution) {
+      // A mesh's (a revolution's) size is in its own coordinates, not in its placement.
+      const glm::dvec3 e = object_bounds(p).extent();
       stretch *= std::min({e.x, e.y, e.z});
     }
     static_assert(kMaxSceneRatio == 1e6, "the messages below name the ratio");

@@ -53,13 +53,13 @@ void merge_fresh(std::vector<Crossing>& pending, std::vector<Crossing>& fresh) {
   fresh.clear();
 }
 
-// A mesh met by the ray: a leaf with any number of intervals along it. As a
+// A mesh or a revolution met by the ray: a leaf with any number of intervals along it. As a
 // convex primitive's, a crossing at or before the ray's start sets the leaf's
 // state there, and every crossing ahead goes to `add`.
 template <typename AddCrossing>
-void meet_mesh(std::uint32_t p, const PreparedPrimitive& prim, const Ray& ray, Tracer::Scratch& s, OpCounts& ops,
+void meet_many_intervals(std::uint32_t p, const PreparedPrimitive& prim, const Ray& ray, Tracer::Scratch& s, OpCounts& ops,
                AddCrossing add) {
-  mesh_crossings(prim, ray, s.leaf_crossings, s.leaf_work, ops);
+  leaf_crossings(prim, ray, s.leaf_crossings, s.leaf_work, ops);
   bool inside_at_start = false;
   for (const LineCrossing& c : s.leaf_crossings) {
     if (c.t <= ray.tmin) {
@@ -82,8 +82,8 @@ void meet_primitives(std::span<const std::uint32_t> voxel,
   for (const std::uint32_t p : voxel) {
     if (s.mailbox[p] == s.stamp) continue;
     s.mailbox[p] = s.stamp;
-    if (prims[p].kind == PrimitiveKind::Mesh) {
-      meet_mesh(p, prims[p], ray, s, ops, add);
+    if (has_many_intervals(prims[p].kind)) {
+      meet_many_intervals(p, prims[p], ray, s, ops, add);
       continue;
     }
     LineSpan span;

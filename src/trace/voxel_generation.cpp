@@ -29,7 +29,7 @@ struct FacePlane {
 std::vector<glm::dvec3> make_bounding_directions(PrimitiveKind kind) {
   std::vector<glm::dvec3> dirs = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0},
                                   {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
-  if (kind == PrimitiveKind::Box || kind == PrimitiveKind::Mesh) return dirs;
+  if (kind == PrimitiveKind::Box || kind == PrimitiveKind::Mesh || kind == PrimitiveKind::Revolution) return dirs;
   for (int sx : {-1, 1})
     for (int sy : {-1, 1}) {
       dirs.push_back(glm::dvec3(sx, sy, 0));
@@ -55,6 +55,7 @@ const std::vector<glm::dvec3>& bounding_directions(PrimitiveKind kind) {
     case PrimitiveKind::Cone:
       return cone;
     case PrimitiveKind::Mesh:
+    case PrimitiveKind::Revolution:
       break;
   }
   return box;
@@ -71,9 +72,11 @@ double support(const PreparedPrimitive& p, const glm::dvec3& u) {
       const double radial = std::hypot(u.x, u.y);
       return std::max(p.cone_r1 * radial, p.cone_r2 * radial + u.z);
     }
-    case PrimitiveKind::Mesh: {
-      // The mesh's own box bounds it: its faces are the box directions' planes.
-      const Aabb& b = p.mesh->mesh->bounds;
+    case PrimitiveKind::Mesh:
+    case PrimitiveKind::Revolution: {
+      // The mesh's (the revolution's) own box bounds it: its faces are the box
+      // directions' planes.
+      const Aabb b = object_bounds(p);
       double h = 0;
       for (int k = 0; k < 3; ++k) h += std::max(u[k] * b.lo[k], u[k] * b.hi[k]);
       return h;

@@ -178,9 +178,10 @@ TEST(CliScad, ErrorsInTheExportNameTheScad) {
   SKIP_WITHOUT_OPENSCAD();
   TempDir dir;
   const std::string scad = dir / "e.scad";
-  const std::string err = refusal(dir, "e.scad", "rotate_extrude() square(3);\nsphere(1);\nresize([1, 1, 1]) cube(1);\n");
+  const std::string err =
+      refusal(dir, "e.scad", "resize([1, 1, 1]) cube(3);\nsphere(1);\nresize([2, 2, 2]) cube(1);\n");
   EXPECT_EQ(err.rfind((dir / "tmp") + "/capsim-scad.", 0), 0u) << err;
-  EXPECT_NE(err.find("/e.csg:1:1: 'rotate_extrude' is not supported"), std::string::npos) << err;
+  EXPECT_NE(err.find("/e.csg:1:1: 'resize' is not supported"), std::string::npos) << err;
   EXPECT_NE(err.find("/e.csg:5:1: 'resize' is not supported"), std::string::npos) << err;
   EXPECT_NE(err.find("\n" + scad + ": the errors above are in OpenSCAD's CSG export of it"), std::string::npos)
       << err;

@@ -54,7 +54,8 @@ std::string minimal_profile_text() {
                       "dda_step": 5, "voxel_visit": 13, "matvec": 6, "tree_visit": 7, "hit_sort": 8,
                       "shading_eval": 9, "ray_other": 10, "pixel_write": 11,
                       "aa_square": 12, "voxel_pass": 14, "mesh_test": 15,
-                      "mesh_node_test": 16, "triangle_test": 17},
+                      "mesh_node_test": 16, "triangle_test": 17, "revolution_test": 18,
+                      "revolution_edge_test": 19, "quartic_test": 20},
     "host_costs_us": {"primitive": 1, "matmat": 2, "matvec": 3, "voxel_column": 4, "voxel_entry": 5,
                       "grid_voxel": 6},
     "bus": {"bytes_per_second": 1000, "arbitration_us": 1.4, "latency_us": 1.6},
@@ -143,7 +144,7 @@ TEST(CostProfile, RoundingNamesTheTimesMovedByMoreThanOnePercent) {
   // At 1 MHz the minimal profile's times are whole cycles but the bus's
   // 1.4 us (1 cycle, 28.6 % off) and 1.6 us (2 cycles, 25 % off).
   const CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
-  EXPECT_EQ(p.times.size(), 26u);  // 17 cell, 6 host, 2 bus, 1 link
+  EXPECT_EQ(p.times.size(), 29u);  // 20 cell, 6 host, 2 bus, 1 link
   const std::vector<ProfileTime> off = p.rounding();
   ASSERT_EQ(off.size(), 2u);
   EXPECT_EQ(off[0].key, "bus.arbitration_us");

@@ -36,6 +36,9 @@ inline void append_node(std::string& out, const capsim::Scene& scene, const caps
       case capsim::PrimitiveKind::Mesh:  // the oracle's random scenes hold none
         shape = "polyhedron();  // a mesh";
         break;
+      case capsim::PrimitiveKind::Revolution:  // nor revolutions
+        shape = "rotate_extrude();  // a revolution";
+        break;
     }
     out += fmt::format("{}{} {}  // primitive {}\n", pad, matrix_text(p.to_world), shape,
                        node.primitive);

@@ -197,7 +197,8 @@ inline capsim::Aabb canonical_bounds(capsim::PrimitiveKind kind) {
     case capsim::PrimitiveKind::Sphere: return {glm::dvec3(-1), glm::dvec3(1)};
     case capsim::PrimitiveKind::Box: return {glm::dvec3(0), glm::dvec3(1)};
     case capsim::PrimitiveKind::Cone: return {glm::dvec3(-1, -1, 0), glm::dvec3(1)};
-    case capsim::PrimitiveKind::Mesh: refuse_mesh();
+    case capsim::PrimitiveKind::Mesh:
+    case capsim::PrimitiveKind::Revolution: refuse_mesh();
   }
   return {};
 }
@@ -228,7 +229,8 @@ inline Span line_span(const OraclePrimitive& p, const capsim::Ray& ray) {
     case capsim::PrimitiveKind::Sphere: return sphere_span(o, d);
     case capsim::PrimitiveKind::Box: return box_span(o, d);
     case capsim::PrimitiveKind::Cone: return cone_span(o, d, p.r1, p.r2);
-    case capsim::PrimitiveKind::Mesh: refuse_mesh();
+    case capsim::PrimitiveKind::Mesh:
+    case capsim::PrimitiveKind::Revolution: refuse_mesh();
   }
   return {};
 }
@@ -247,7 +249,8 @@ inline glm::dvec3 world_normal(const OraclePrimitive& p, const capsim::Ray& ray,
       else n = {q.x, q.y, -(p.r1 + k * q.z) * k};  // gradient of x^2 + y^2 - r(z)^2
       break;
     }
-    case capsim::PrimitiveKind::Mesh: refuse_mesh();
+    case capsim::PrimitiveKind::Mesh:
+    case capsim::PrimitiveKind::Revolution: refuse_mesh();
   }
   return glm::normalize(p.normal_to_world * n);
 }

@@ -178,7 +178,8 @@ inline glm::dvec3 point_inside(Rng& rng, const capsim::Primitive& p) {
       } while (q.x * q.x + q.y * q.y >= r * r);
       break;
     }
-    case capsim::PrimitiveKind::Mesh: refuse_mesh();
+    case capsim::PrimitiveKind::Mesh:
+    case capsim::PrimitiveKind::Revolution: refuse_mesh();
   }
   return glm::dvec3(p.to_world * glm::dvec4(q, 1.0));
 }
@@ -220,7 +221,8 @@ inline SurfacePoint point_on_surface(Rng& rng, const capsim::Primitive& prim) {
       const double r = (surface == 1 ? r1 : r2) * std::sqrt(rng.uniform());
       return {r * radial + glm::dvec3(0, 0, z), glm::dvec3(0, 0, surface == 1 ? -1.0 : 1.0)};
     }
-    case capsim::PrimitiveKind::Mesh: refuse_mesh();
+    case capsim::PrimitiveKind::Mesh:
+    case capsim::PrimitiveKind::Revolution: refuse_mesh();
   }
   return {};
 }
@@ -242,7 +244,8 @@ inline glm::dvec3 point_on_edge(Rng& rng, const capsim::Primitive& prim) {
       const double phi = rng.uniform(0, 2 * std::numbers::pi);
       return {r * std::cos(phi), r * std::sin(phi), top ? 1.0 : 0.0};
     }
-    case capsim::PrimitiveKind::Mesh: refuse_mesh();
+    case capsim::PrimitiveKind::Mesh:
+    case capsim::PrimitiveKind::Revolution: refuse_mesh();
   }
   return {};
 }

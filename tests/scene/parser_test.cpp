@@ -512,7 +512,6 @@ TEST(ParserRefusesConstructs, UnsupportedModules) {
     const char* call;
   };
   const Case cases[] = {
-      {"rotate_extrude", "rotate_extrude() circle(1);"},
       {"resize", "resize([1, 1, 1]) cube();"},
   };
   for (const Case& c : cases) {
@@ -536,10 +535,6 @@ TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
     EXPECT_FALSE(parse_scene(shape, "t.csg").primitives.empty()) << shape;
   EXPECT_TRUE(Refused("projection() resize([1, 1, 1]) cube();", 1, 14,
                       "resize() under projection() is not supported: capsim projects sphere, cube"));
-  EXPECT_TRUE(Refused("rotate_extrude() circle(1);", 1, 1,
-                      "'rotate_extrude' is not supported: revolutions are not supported: capsim traces the solids "
-                      "sphere, cube, cylinder, closed meshes (polyhedron, imported STL and OFF) and straight "
-                      "extrusions (linear_extrude), exactly; supported:"));
   EXPECT_TRUE(Refused("resize([1, 1, 1]) cube();", 1, 1,
                       "'resize' is not supported: resizing to the children's bounds is not "
                       "supported; use scale(); supported:"));

@@ -117,8 +117,8 @@ TEST(ParserExtrusion, Refusals) {
   EXPECT_EQ(refusal("linear_extrude(1) sphere(1);"),
             "t.csg:1:19: sphere() is not a 2-D shape: linear_extrude() extrudes square, circle, polygon and text");
   EXPECT_EQ(refusal("linear_extrude(1) import(\"a.stl\");"),
-            "t.csg:1:19: import() under linear_extrude() reads a 2-D file (DXF, SVG), which is not supported; capsim "
-            "extrudes square, circle, polygon and text");
+            "t.csg:1:19: import() of a mesh (STL, OFF) is not a 2-D shape: linear_extrude() extrudes square, "
+            "circle, polygon, text, offset, projection and 2-D imports (DXF)");
   EXPECT_EQ(refusal("linear_extrude(1) !square(1);"),
             "t.csg:1:19: the '!' (root) modifier is not supported inside linear_extrude()");
   EXPECT_EQ(refusal("linear_extrude(height = 0) square(1);"),
