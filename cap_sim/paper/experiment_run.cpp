@@ -32,6 +32,7 @@ std::string run_command(const RunSpec& spec) {
   run.mode = spec.mode;
   run.profile = spec.profile;
   run.aa.depth = spec.aa_depth;
+  run.balance = spec.balance;
   const std::string simulate = simulate_command(run, CommandForm::NonDefaults);
   if (!spec.lattice) return simulate;
   return fmt::format("capsim lattice {} -o {}{} && {}", spec.lattice->count(), run.scenes[0], size, simulate);
@@ -53,6 +54,7 @@ RunFigures run_experiment(const RunSpec& spec, int threads) {
   config.mode = spec.mode;
   config.profile = spec.costs ? *spec.costs : load_cost_profile(spec.profile);
   config.aa.depth = spec.aa_depth;  // the default threshold, as the command's
+  config.balance = spec.balance;
   config.screen = ScreenFormat::Srgb8;  // as for `-o screen.png`; the cycles do not depend on it
   const SimulationResult r = simulate_frame(tracer, config, threads, false);
 
@@ -67,10 +69,12 @@ RunFigures run_experiment(const RunSpec& spec, int threads) {
     f.ops += c.ops;
     f.pixels += c.pixels;
     f.cells.push_back({c.ops, c.pixels, c.finish});
+    f.tile_wait += c.tile_wait;
   }
   f.voxels = r.voxel_counts;
   f.bus = r.bus;
   f.links = link_totals(r);
+  f.balance_bus_percent = balance_bus_percent(r);
   f.grid_divisions = scene.grid.n;
   return f;
 }

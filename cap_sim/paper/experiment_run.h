@@ -25,6 +25,7 @@ struct RunSpec {
   // trial values); the command still names `profile`.
   std::optional<CostProfile> costs;
   int aa_depth = 0;
+  BalanceOptions balance;  // static (the paper's) unless set
 };
 
 // What one cell did in a run: its operations and when its "done" reached the
@@ -49,6 +50,11 @@ struct RunFigures {
   BusTotals bus;
   LinkTotals links;
   int grid_divisions = 0;  // as used (auto resolved)
+  // Balanced on demand: the bus cycles held by balancing messages as a share
+  // of the run (balance_bus_percent), and the cells' waits for an answer with
+  // nothing to trace, summed; 0 statically.
+  double balance_bus_percent = 0;
+  Cycles tile_wait;
 
   double seconds(Cycles c) const { return c.seconds(clock_hz); }
   double frame_seconds() const { return seconds(frame); }

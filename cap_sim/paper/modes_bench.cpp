@@ -14,15 +14,14 @@ namespace {
 
 using nlohmann::json;
 
-constexpr PixelMode kModes[3] = {PixelMode::Block, PixelMode::Line, PixelMode::Dot};
-
-std::string run_name(const std::string& model, PixelMode mode, const std::string& cells, int aa) {
-  return fmt::format("{} {} {} aa{}", model, to_string(mode), cells, aa);
+std::string run_name(const std::string& model, const std::string& scheme, const std::string& cells, int aa) {
+  return fmt::format("{} {} {} aa{}", model, scheme, cells, aa);
 }
 
 std::string run_name(const json& run) {
-  return fmt::format("{} {} {} aa{}", run.at("model").get<std::string>(), run.at("mode").get<std::string>(),
-                     run.at("cells").get<std::string>(), run.at("aa").get<int>());
+  const json& scheme = run.contains("mode") ? run.at("mode") : run.at("balance");
+  return run_name(run.at("model").get<std::string>(), scheme.get<std::string>(), run.at("cells").get<std::string>(),
+                  run.at("aa").get<int>());
 }
 
 std::string model_name(const std::string& file) {
@@ -47,34 +46,47 @@ const std::vector<int>& modes_bench_aa_depths() {
   return depths;
 }
 
+const std::vector<std::string>& modes_bench_schemes() {
+  static const std::vector<std::string> schemes = {"block", "line", "dot",
+                                                   to_string(BalanceOptions{BalanceScheme::Demand})};
+  return schemes;
+}
+
+std::string ModeRun::scheme() const { return balance.on_demand() ? to_string(balance) : to_string(mode); }
+
 ModesBench run_modes_bench(const ModesBenchOptions& options) {
   ModesBench b;
   b.options = options;
   b.options.log = nullptr;
   for (const std::string& file : modes_bench_models())
     for (int aa : modes_bench_aa_depths())
-      for (PixelMode mode : kModes)
+      for (const std::string& scheme : modes_bench_schemes())
         for (const CellGrid& grid : modes_bench_grids()) {
+          ModeRun r;
+          if (const auto mode = parse_pixel_mode(scheme))
+            r.mode = *mode;
+          else
+            r.balance = parse_balance(scheme);
           RunSpec s;
           s.scene = options.scenes_dir + "/" + file;
           s.width = options.width;
           s.height = options.height;
           s.cells = grid;
-          s.mode = mode;
+          s.mode = r.mode;
+          s.balance = r.balance;
           s.aa_depth = aa;
-          ModeRun r;
           r.model = model_name(file);
-          r.mode = mode;
           r.cells = grid;
           r.aa_depth = aa;
-          if (options.log) options.log(run_name(r.model, mode, to_string(grid), aa));
+          if (options.log) options.log(run_name(r.model, scheme, to_string(grid), aa));
           r.figures = run_experiment(s, options.threads);
           b.runs.push_back(std::move(r));
         }
-  // Speed-up against the same model, antialiasing and mode on the first grid (4x4).
+  // Speed-up against the same model, antialiasing and scheme on the first grid (4x4).
   for (ModeRun& r : b.runs) {
     const auto base = std::find_if(b.runs.begin(), b.runs.end(), [&](const ModeRun& o) {
-      return o.model == r.model && o.aa_depth == r.aa_depth && o.mode == r.mode && o.cells == modes_bench_grids()[0];
+      return o.model == r.model && o.aa_depth == r.aa_depth && o.scheme() == r.scheme() &&
+             o.cells == modes_bench_grids()[0];
     });
     r.speedup = static_cast<double>(base->figures.frame.count()) / static_cast<double>(r.figures.frame.count());
   }
@@ -85,9 +97,9 @@ json modes_bench_json(const ModesBench& b) {
   json runs = json::array();
   for (const ModeRun& r : b.runs) {
     const RunFigures& f = r.figures;
-    runs.push_back({
+    json run = {
         {"model", r.model},
-        {"mode", to_string(r.mode)},
+        {r.balance.on_demand() ? "balance" : "mode", r.scheme()},
         {"cells", to_string(r.cells)},
         {"aa", r.aa_depth},
         {"frame_cycles", f.frame.count()},
@@ -102,7 +114,10 @@ json modes_bench_json(const ModesBench& b) {
         {"link_bytes", f.links.bytes},
         {"link_hops", f.links.hops},
         {"busiest_link_cycles", f.links.busiest.count()},
-    });
+    };
+    if (r.balance.on_demand())
+      run.update({{"balance_bus_percent", f.balance_bus_percent}, {"tile_wait_cycles", f.tile_wait.count()}});
+    runs.push_back(std::move(run));
   }
   return {{"benchmark", "capsim bench modes"},
           {"size", fmt::format("{}x{}", b.options.width, b.options.height)},
@@ -114,13 +129,13 @@ json modes_bench_json(const ModesBench& b) {
 std::string modes_bench_table(const ModesBench& b) {
   std::string s = fmt::format("capsim bench modes: {}x{} pixels, cap profile; seconds simulated\n\n",
                               b.options.width, b.options.height);
-  s += fmt::format("{:<12} {:<5} {:>5} {:>3} {:>10} {:>10} {:>10} {:>7} {:>8} {:>10} {:>9} {:>9} {:>11}\n", "model",
-                   "mode", "cells", "aa", "frame s", "Max s", "Min s", "d %", "speedup", "bus bytes", "bus s",
+  s += fmt::format("{:<12} {:<9} {:>5} {:>3} {:>10} {:>10} {:>10} {:>7} {:>8} {:>10} {:>9} {:>9} {:>11}\n", "model",
+                   "scheme", "cells", "aa", "frame s", "Max s", "Min s", "d %", "speedup", "bus bytes", "bus s",
                    "link msgs", "link bytes");
   for (const ModeRun& r : b.runs) {
     const RunFigures& f = r.figures;
-    s += fmt::format("{:<12} {:<5} {:>5} {:>3} {:>10.3f} {:>10.3f} {:>10.3f} {:>7.2f} {:>8.3f} {:>10} {:>9.4f} {:>9} {:>11}\n",
-                     r.model, to_string(r.mode), to_string(r.cells), r.aa_depth, f.frame_seconds(),
+    s += fmt::format("{:<12} {:<9} {:>5} {:>3} {:>10.3f} {:>10.3f} {:>10.3f} {:>7.2f} {:>8.3f} {:>10} {:>9.4f} {:>9} {:>11}\n",
+                     r.model, r.scheme(), to_string(r.cells), r.aa_depth, f.frame_seconds(),
                      f.seconds(f.spread.max_finish), f.seconds(f.spread.min_finish), f.spread.deviation_percent,
                      r.speedup, f.bus.bytes, f.seconds(f.bus.busy), f.links.messages, f.links.bytes);
   }
@@ -129,20 +144,21 @@ std::string modes_bench_table(const ModesBench& b) {
 
 std::string modes_bench_svg(const ModesBench& b) {
   // Plain frames: d and speed-up against the cell count, a colour per model
-  // and a dash per mode.
+  // and a dash per scheme.
   std::vector<std::string> models;
   for (const ModeRun& r : b.runs)
     if (std::find(models.begin(), models.end(), r.model) == models.end()) models.push_back(r.model);
-  const char* dashes[3] = {"", "6 4", "2 3"};
+  const std::vector<std::string>& schemes = modes_bench_schemes();
+  const char* dashes[4] = {"", "6 4", "2 3", "10 3 2 3"};
   std::vector<PlotSeries> d_series, speed_series;
   double d_lo = 100, d_hi = 0.1;
   for (std::size_t m = 0; m < models.size(); ++m)
-    for (int k = 0; k < 3; ++k) {
-      PlotSeries d = plot_series(fmt::format("{} {}", models[m], to_string(kModes[k])),
-                                 series_colour(static_cast<int>(m)), dashes[k]);
+    for (std::size_t k = 0; k < schemes.size(); ++k) {
+      PlotSeries d = plot_series(fmt::format("{} {}", models[m], schemes[k]), series_colour(static_cast<int>(m)),
+                                 dashes[k % 4]);
       PlotSeries sp = d;
       for (const ModeRun& r : b.runs) {
-        if (r.model != models[m] || r.mode != kModes[k] || r.aa_depth != 0) continue;
+        if (r.model != models[m] || r.scheme() != schemes[k] || r.aa_depth != 0) continue;
         const double cells = r.cells.cell_count();
         const double dev = std::max(r.figures.spread.deviation_percent, 0.01);
         d_lo = std::min(d_lo, dev);

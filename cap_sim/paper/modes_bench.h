@@ -1,8 +1,8 @@
 #pragma once
 // Regression benchmarks of the pixel modes (`capsim bench modes`,
-// docs/benchmarks.md): every shipped model in block, line and dot mode on
-// 4x4, 4x8, 8x8 and 16x16 cells, plain and antialiased, with the simulated
-// figures that matter for the modes. Simulated cycles are deterministic, so a
+// docs/benchmarks.md): every shipped model in block, line and dot mode, and
+// balanced on demand (docs/balancing.md), on 4x4, 4x8, 8x8 and 16x16 cells,
+// plain and antialiased, with the simulated figures that matter for them. Simulated cycles are deterministic, so a
 // stored baseline is compared exactly: any change is a regression or an
 // intended change to be recorded.
 
@@ -27,32 +27,40 @@ struct ModesBenchOptions {
 const std::vector<std::string>& modes_bench_models();  // "balls.csg", ..., "disb/f00000.csg"
 const std::vector<CellGrid>& modes_bench_grids();       // 4x4, 4x8, 8x8, 16x16
 const std::vector<int>& modes_bench_aa_depths();        // 0 (plain) and 2
+// How the runs share the screen: the three pixel modes (static, the paper's)
+// and demand at its default tile.
+const std::vector<std::string>& modes_bench_schemes();  // "block", "line", "dot", "demand:64"
 
 struct ModeRun {
   std::string model;  // the file's name without .csg ("balls", "disb/f00000")
-  PixelMode mode = PixelMode::Dot;
+  PixelMode mode = PixelMode::Dot;  // static runs' (demand runs keep the default)
+  BalanceOptions balance;
   CellGrid cells;
   int aa_depth = 0;
   RunFigures figures;
-  double speedup = 0;  // the same model, mode and antialiasing on 4x4 cells over this
+  double speedup = 0;  // the same model, scheme and antialiasing on 4x4 cells over this
+
+  // The mode's name when static, else the balance scheme's ("demand:64").
+  std::string scheme() const;
 };
 
 struct ModesBench {
   ModesBenchOptions options;
-  std::vector<ModeRun> runs;  // model, then antialiasing, then mode, then grid
+  std::vector<ModeRun> runs;  // model, then antialiasing, then scheme, then grid
 };
 
 ModesBench run_modes_bench(const ModesBenchOptions& options);
 
-// The results as JSON (the baseline format, docs/benchmarks.md), as a table
-// for people, and as an SVG plot (d and speed-up against the cell count).
+// The results as JSON (the baseline format, docs/benchmarks.md: a static
+// run has a "mode", a demand run a "balance" and its balancing figures), as a
+// table for people, and as an SVG plot (d and speed-up against the cell count).
 nlohmann::json modes_bench_json(const ModesBench& b);
 std::string modes_bench_table(const ModesBench& b);
 std::string modes_bench_svg(const ModesBench& b);
 
 // A figure that differs between a baseline and a run (or a run only one has).
 struct MovedFigure {
-  std::string run;     // "balls dot 8x8 aa0"
+  std::string run;     // "balls dot 8x8 aa0", "balls demand:64 8x8 aa0"
   std::string metric;  // "frame_cycles", ..., or "(run)" when the run is in one only
   std::string old_value, new_value;
   double ratio = 0;  // new / old; 0 when not both numbers

@@ -14,8 +14,6 @@ namespace capsim::sim {
 
 namespace {
 
-constexpr PixelMode kModes[3] = {PixelMode::Block, PixelMode::Line, PixelMode::Dot};
-
 // Each distinct value of a run's field, in the order of first appearance.
 template <typename T, typename Field>
 std::vector<T> distinct(const ModesBench& b, Field field) {
@@ -83,19 +81,19 @@ std::string baseline_text(const ModesBench& b, const BaselineOutcome& o) {
 
 std::string header_section(const ModesBench& b, const nlohmann::json& summary, const BaselineOutcome& o) {
   std::vector<std::string> models = distinct<std::string>(b, [](const ModeRun& r) { return r.model; });
-  std::vector<std::string> modes, grids, aa;
-  for (PixelMode m : distinct<PixelMode>(b, [](const ModeRun& r) { return r.mode; })) modes.push_back(to_string(m));
+  std::vector<std::string> grids, aa;
+  const std::vector<std::string> schemes = distinct<std::string>(b, [](const ModeRun& r) { return r.scheme(); });
   for (const CellGrid& g : distinct<CellGrid>(b, [](const ModeRun& r) { return r.cells; })) grids.push_back(to_string(g));
   for (int d : distinct<int>(b, [](const ModeRun& r) { return r.aa_depth; }))
     aa.push_back(d == 0 ? std::string("plain") : fmt::format("antialiased (--aa {})", d));
   return fmt::format(
       "<header>\n<h1>CAP pixel modes compared</h1>\n"
       "<p class=\"lead\"><strong id=\"screen-size\">{}</strong> pixels, profile <strong>{}</strong>, "
-      "<strong id=\"run-count\">{} runs</strong>: {} in {} mode on {} cells, {}.</p>\n{}"
+      "<strong id=\"run-count\">{} runs</strong>: {} shared by {} on {} cells, {}.</p>\n{}"
       "<nav><a href=\"#reading\">Reading the page</a> <a href=\"#plots\">Plots</a> <a href=\"#runs\">Every run</a>"
       "</nav>\n</header>\n",
       summary.at("size").get<std::string>(), html_escape(summary.at("profile").get<std::string>()), b.runs.size(),
-      html_escape(joined(models)), joined(modes), joined(grids), joined(aa), baseline_text(b, o));
+      html_escape(joined(models)), joined(schemes), joined(grids), joined(aa), baseline_text(b, o));
 }
 
 std::string reading_section(const ModesBench& b) {
@@ -105,13 +103,15 @@ std::string reading_section(const ModesBench& b) {
       "<p>Each run traces one frame of a model on the simulated CAP, as the <code>capsim simulate</code> command "
       "shown when the pointer rests on its row of the table does. The pixel mode shares the screen among the "
       "cells: in block mode each cell traces one rectangle, in line mode every so many rows, in dot mode one pixel "
-      "of every square the size of the cell grid. Each cell sends its &ldquo;done&rdquo; to the host over the "
+      "of every square the size of the cell grid. Balanced on demand (<code>demand:64</code>, LINKS-1's scheme), "
+      "the host hands out tiles of 8 x 8 pixels over the command bus to the cells that ask, so a cell that "
+      "finishes early takes more. Each cell sends its &ldquo;done&rdquo; to the host over the "
       "command bus. An antialiased run adds the exchange of corner samples over the neighbour links.</p>\n"
       "<p><strong>d = (Max &minus; Min) / Max</strong> is the paper's measure of how evenly a mode spreads the "
       "work (Table 4-4): Max is the cycle the slowest cell's &ldquo;done&rdquo; reached the host, which is the "
       "frame time, and Min the fastest cell's. At d = 0 % every cell finishes together; at d = 20 % the first "
       "cell to finish stands idle for the last fifth of the frame. Lower is better.</p>\n"
-      "<p><strong>Speed-up</strong> is the frame time of the same model, mode and antialiasing on {} cells ({} "
+      "<p><strong>Speed-up</strong> is the frame time of the same model, scheme and antialiasing on {} cells ({} "
       "cells) over this run's, the measure Graph 4-3 plots against the number of cells. Perfect scaling would "
       "give the ratio of the cell counts: 2 on 32 cells, 4 on 64, 16 on 256. A large d and the time every cell "
       "spends on the broadcasts and the bus keep it lower. The plots' axes are logarithmic, so perfect scaling "
@@ -169,19 +169,19 @@ PlotAxes cells_axes(const ModesBench& b, std::string title, std::string y_label)
   return a;
 }
 
-// One model: d and the speed-up against the cell count, a colour per mode,
+// One model: d and the speed-up against the cell count, a colour per scheme,
 // plain frames solid with round markers, antialiased dashed with square ones.
 std::string model_figure(const ModesBench& b, const std::string& model, const PlotRanges& p) {
   std::vector<PlotSeries> d_series, speed_series;
   const std::vector<int> depths = distinct<int>(b, [](const ModeRun& r) { return r.aa_depth; });
+  const std::vector<std::string> schemes = distinct<std::string>(b, [](const ModeRun& r) { return r.scheme(); });
   for (int aa : depths)
-    for (int k = 0; k < 3; ++k) {
-      PlotSeries d = plot_series(aa == 0 ? std::string(to_string(kModes[k]))
-                                         : fmt::format("{}, --aa {}", to_string(kModes[k]), aa),
-                                 series_colour(k), aa == 0 ? "" : "6 4", aa != 0);
+    for (std::size_t k = 0; k < schemes.size(); ++k) {
+      PlotSeries d = plot_series(aa == 0 ? schemes[k] : fmt::format("{}, --aa {}", schemes[k], aa),
+                                 series_colour(static_cast<int>(k)), aa == 0 ? "" : "6 4", aa != 0);
       PlotSeries speed = d;
       for (const ModeRun& r : b.runs) {
-        if (r.model != model || r.mode != kModes[k] || r.aa_depth != aa) continue;
+        if (r.model != model || r.scheme() != schemes[k] || r.aa_depth != aa) continue;
         d.points.push_back({static_cast<double>(r.cells.cell_count()), plotted_d(r)});
         speed.points.push_back({static_cast<double>(r.cells.cell_count()), r.speedup});
       }
@@ -204,7 +204,7 @@ std::string model_figure(const ModesBench& b, const std::string& model, const Pl
   const double w = 560, h = 360;
   return fmt::format(
       "<figure class=\"model-plot\" data-model=\"{}\">\n{}<figcaption>{}: d (left) and speed-up (right) against the "
-      "number of cells; a colour per mode, plain frames solid, antialiased dashed with square markers.</figcaption>"
+      "number of cells; a colour per scheme, plain frames solid, antialiased dashed with square markers.</figcaption>"
       "\n</figure>\n",
       html_escape(model),
       inline_svg(svg_document(2 * w, h, plot_panel_svg(d, d_series, 0, 0, w, h) +
@@ -220,7 +220,7 @@ std::string plots_section(const ModesBench& b) {
   return fmt::format(
       "<section id=\"plots\" class=\"plots\">\n<h2>Plots</h2>\n"
       "<figure class=\"overview-plot\">\n{}<figcaption>Every model's plain frames at once: a colour per model, "
-      "solid for block, dashed for line, dotted for dot mode (the same plot as --plot).</figcaption>\n</figure>\n"
+      "solid for block, dashed for line, dotted for dot mode, dash-dotted for demand (the same plot as --plot).</figcaption>\n</figure>\n"
       "<h3>Model by model</h3>\n<p>The same axes for every model, so that they compare at a glance. A d of 0 is "
       "drawn at 0.01 %.</p>\n{}</section>\n",
       inline_svg(modes_bench_svg(b)), figures);
@@ -241,7 +241,7 @@ std::string runs_section(const ModesBench& b) {
     bool number;
   };
   constexpr Column kColumns[] = {
-      {"model", "model", false},          {"mode", "mode", false},         {"cells", "cells", true},
+      {"model", "model", false},          {"scheme", "scheme", false},         {"cells", "cells", true},
       {"aa", "aa", true},                 {"frame", "frame s", true},      {"max", "Max s", true},
       {"min", "Min s", true},             {"d", "d %", true},              {"speedup", "speed-up", true},
       {"bus_bytes", "bus bytes", true},   {"link_messages", "link messages", true},
@@ -258,7 +258,7 @@ std::string runs_section(const ModesBench& b) {
         "<tr title=\"{}\"><td class=\"text\">{}</td><td class=\"text\">{}</td><td data-value=\"{}\">{}</td>"
         "<td>{}</td>{}{}{}<td data-value=\"{}\">{:.2f}</td><td data-value=\"{}\">{:.3f}</td>"
         "<td data-value=\"{}\">{}</td><td data-value=\"{}\">{}</td><td data-value=\"{}\">{}</td></tr>\n",
-        html_escape(f.command), html_escape(r.model), to_string(r.mode), r.cells.cell_count(), to_string(r.cells),
+        html_escape(f.command), html_escape(r.model), r.scheme(), r.cells.cell_count(), to_string(r.cells),
         r.aa_depth, seconds_cell(f, f.frame), seconds_cell(f, f.spread.max_finish),
         seconds_cell(f, f.spread.min_finish), exact(f.spread.deviation_percent), f.spread.deviation_percent,
         exact(r.speedup), r.speedup, f.bus.bytes, grouped(f.bus.bytes), f.links.messages,
@@ -266,10 +266,10 @@ std::string runs_section(const ModesBench& b) {
   }
   return fmt::format(
       "<section id=\"runs\">\n<h2>Every run</h2>\n<p>One row per run, in the benchmark's order (model, then "
-      "antialiasing, then mode, then cells). Rest the pointer on a row for the <code>capsim simulate</code> "
+      "antialiasing, then scheme, then cells). Rest the pointer on a row for the <code>capsim simulate</code> "
       "command that repeats it, on a time for its cycles. With JavaScript, a click on a heading sorts by that "
-      "column and a second click reverses it. Bus bytes are everything on the command bus: the broadcasts and "
-      "every cell's &ldquo;done&rdquo;; the links carry the corner exchange of antialiased runs only.</p>\n"
+      "column and a second click reverses it. Bus bytes are everything on the command bus: the broadcasts, "
+      "every cell's &ldquo;done&rdquo; and, on demand, the requests and grants of tiles; the links carry the corner exchange of antialiased runs only.</p>\n"
       "<div class=\"table-box\"><table id=\"runs-table\" class=\"numbers\">\n<caption>{} runs; seconds "
       "simulated</caption>\n<thead><tr>{}</tr></thead>\n<tbody>\n{}</tbody>\n</table></div>\n</section>\n",
       b.runs.size(), head, body);

@@ -106,14 +106,15 @@ TEST_F(ModesPage, PlotsAreInlineSvgOnePerModelAfterTheOverview) {
     ASSERT_FALSE(figure.empty()) << model;
     EXPECT_NE(figure.find(fmt::format(">{}: d = (Max - Min) / Max</text>", model)), std::string::npos) << model;
     EXPECT_NE(figure.find(fmt::format(">{}: speed-up against 4x4 cells</text>", model)), std::string::npos) << model;
-    // Three modes, plain and antialiased, in both panels' legends.
-    for (const char* series : {">block</text>", ">line</text>", ">dot</text>", ">block, --aa 2</text>",
-                               ">line, --aa 2</text>", ">dot, --aa 2</text>"})
+    // Three modes and demand, plain and antialiased, in both panels' legends.
+    for (const char* series : {">block</text>", ">line</text>", ">dot</text>", ">demand:64</text>",
+                               ">block, --aa 2</text>", ">line, --aa 2</text>", ">dot, --aa 2</text>",
+                               ">demand:64, --aa 2</text>"})
       EXPECT_EQ(count(figure, series), 2u) << model << " " << series;
-    // Four cell counts per series: 6 series x 2 panels, 4 points each; the
+    // Four cell counts per series: 8 series x 2 panels, 4 points each; the
     // antialiased ones with square markers.
-    EXPECT_EQ(count(figure, "<circle "), 3u * 2 * 4) << model;
-    EXPECT_EQ(count(figure, "width=\"6\" height=\"6\""), 3u * 2 * 4) << model;
+    EXPECT_EQ(count(figure, "<circle "), 4u * 2 * 4) << model;
+    EXPECT_EQ(count(figure, "width=\"6\" height=\"6\""), 4u * 2 * 4) << model;
   }
 }
 
@@ -121,23 +122,22 @@ TEST_F(ModesPage, HoldsEveryRunsFiguresAndCommandInAPlainTable) {
   const std::string page = modes_page(bench(), matched(), "0.1.0");
   const std::string table = between(page, "<table id=\"runs-table\"", "</table>");
   ASSERT_FALSE(table.empty());
-  for (const char* heading : {">model</th>", ">mode</th>", ">cells</th>", ">aa</th>", ">frame s</th>", ">Max s</th>",
+  for (const char* heading : {">model</th>", ">scheme</th>", ">cells</th>", ">aa</th>", ">frame s</th>", ">Max s</th>",
                               ">Min s</th>", ">d %</th>", ">speed-up</th>", ">bus bytes</th>",
                               ">link messages</th>", ">link bytes</th>"})
     EXPECT_NE(table.find(heading), std::string::npos) << heading;
   const std::string body = between(table, "<tbody>", "</tbody>");
   ASSERT_EQ(count(body, "<tr "), bench().runs.size());
-  ASSERT_EQ(bench().runs.size(), 120u);
+  ASSERT_EQ(bench().runs.size(), 160u);
   std::size_t at = 0;
   for (const ModeRun& r : bench().runs) {
     const RunFigures& f = r.figures;
     const std::string row = between(body, "<tr ", "</tr>", at);
     at = body.find("</tr>", body.find("<tr ", at)) + 5;
-    const std::string name = fmt::format("{} {} {} aa{}", r.model, to_string(r.mode), to_string(r.cells), r.aa_depth);
+    const std::string name = fmt::format("{} {} {} aa{}", r.model, r.scheme(), to_string(r.cells), r.aa_depth);
     EXPECT_TRUE(row.starts_with("title=\"" + attribute(f.command) + "\"")) << name << ": " << row;
     EXPECT_NE(f.command.find("capsim simulate"), std::string::npos);
-    EXPECT_NE(row.find(fmt::format("<td class=\"text\">{}</td><td class=\"text\">{}</td>", r.model,
-                                   to_string(r.mode))),
+    EXPECT_NE(row.find(fmt::format("<td class=\"text\">{}</td><td class=\"text\">{}</td>", r.model, r.scheme())),
               std::string::npos)
         << name;
     EXPECT_NE(row.find(fmt::format("<td data-value=\"{}\">{}</td><td>{}</td>", r.cells.cell_count(),
@@ -155,8 +155,10 @@ TEST_F(ModesPage, HoldsEveryRunsFiguresAndCommandInAPlainTable) {
         << name;
     for (const std::uint64_t n : {f.bus.bytes, f.links.messages, f.links.bytes})
       EXPECT_NE(row.find(fmt::format("<td data-value=\"{}\">", n)), std::string::npos) << name;
-    // Antialiased runs exchange corners over the links; plain ones do not.
-    EXPECT_EQ(f.links.messages > 0, r.aa_depth > 0) << name;
+    // Antialiased static runs exchange corners over the links; plain ones do
+    // not, nor does demand, whose tiles trace their own corners.
+    EXPECT_EQ(f.links.messages > 0, r.aa_depth > 0 && !r.balance.on_demand()) << name;
+    EXPECT_EQ(f.command.find("--balance demand:64") != std::string::npos, r.balance.on_demand()) << name;
   }
 }
 
@@ -166,9 +168,9 @@ TEST_F(ModesPage, HeaderGivesTheScreenProfileRunsAndAMatchedBaseline) {
   EXPECT_NE(header.find("<strong id=\"screen-size\">16x16</strong> pixels, profile <strong>cap</strong>"),
             std::string::npos)
       << header;
-  EXPECT_NE(header.find("<strong id=\"run-count\">120 runs</strong>"), std::string::npos) << header;
+  EXPECT_NE(header.find("<strong id=\"run-count\">160 runs</strong>"), std::string::npos) << header;
   EXPECT_NE(header.find("<p id=\"baseline\" class=\"baseline matched\">Matched the baseline "
-                        "<code>bench/baselines/modes-16x16.json</code>: all 120 runs identical"),
+                        "<code>bench/baselines/modes-16x16.json</code>: all 160 runs identical"),
             std::string::npos)
       << header;
   EXPECT_EQ(page.find("moved-table"), std::string::npos);
@@ -208,7 +210,7 @@ TEST_F(ModesPage, ListsTheMovedFiguresOldNewAndRatio) {
   o.moved.clear();
   EXPECT_NE(modes_page(bench(), o, "0.1.0").find("nothing moved against the old one"), std::string::npos);
   o.existed = false;
-  EXPECT_NE(modes_page(bench(), o, "0.1.0").find("was written from this run (120 runs)"), std::string::npos);
+  EXPECT_NE(modes_page(bench(), o, "0.1.0").find("was written from this run (160 runs)"), std::string::npos);
   // No baseline for the screen: the run stands alone.
   o = BaselineOutcome{"", false, false, "", {}};
   EXPECT_NE(between(modes_page(bench(), o, "0.1.0"), "<header>", "</header>")

@@ -26,10 +26,10 @@ TEST(CliBenchModes, MatchesItsStoredBaseline) {
                                 " --plot " + (dir / "modes.svg"),
                             dir);
   EXPECT_EQ(r.status, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("all 120 runs identical to the baseline"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 160 runs identical to the baseline"), std::string::npos) << r.out;
   // The table: a header and one row per run.
-  EXPECT_NE(r.out.find("model        mode  cells  aa    frame s"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("disb/f00000  dot   16x16   2"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("model        scheme    cells  aa    frame s"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("disb/f00000  dot       16x16   2"), std::string::npos) << r.out;
   // The same figures as the baseline; the file names the version that wrote
   // it, which a baseline from an earlier version may not share.
   nlohmann::json now = nlohmann::json::parse(read_file(dir / "now.json"));
@@ -40,6 +40,28 @@ TEST(CliBenchModes, MatchesItsStoredBaseline) {
   base.erase("capsim_version");
   EXPECT_EQ(now, base);
   EXPECT_EQ(read_file(dir / "modes.svg").find("<svg"), 0u);
+}
+
+TEST(CliBenchModes, DemandRunsFollowTheStaticOnesWithTheirBalancingFigures) {
+  const nlohmann::json base = nlohmann::json::parse(read_file(kBaseline));
+  // Per model and antialiasing: block, line, dot, then demand, on 4 grids each.
+  const nlohmann::json& demand = base["runs"][14];  // balls, plain, demand:64, 8x8 cells
+  EXPECT_EQ(demand["model"], "balls");
+  EXPECT_EQ(demand["balance"], "demand:64");
+  EXPECT_FALSE(demand.contains("mode"));
+  EXPECT_EQ(demand["cells"], "8x8");
+  EXPECT_GT(demand["balance_bus_percent"].get<double>(), 0);
+  EXPECT_TRUE(demand["tile_wait_cycles"].is_number_unsigned());
+  // A static run has neither.
+  EXPECT_EQ(base["runs"][10]["mode"], "dot");
+  EXPECT_FALSE(base["runs"][10].contains("balance"));
+  EXPECT_FALSE(base["runs"][10].contains("balance_bus_percent"));
+  // Tiles trace their own corners: an antialiased demand run sends nothing over the links.
+  const nlohmann::json& aa = base["runs"][30];  // balls, --aa 2, demand:64, 8x8 cells
+  EXPECT_EQ(aa["balance"], "demand:64");
+  EXPECT_EQ(aa["aa"], 2);
+  EXPECT_EQ(aa["link_messages"], 0);
+  EXPECT_GT(base["runs"][26]["link_messages"].get<std::uint64_t>(), 0u);  // balls, --aa 2, dot, 8x8
 }
 
 TEST(CliBenchModes, AMovedFigureFailsWithOldNewAndRatio) {
