@@ -13,15 +13,15 @@ namespace {
 using nlohmann::json;
 
 // The inputs' keys, in the order of the CSV's columns.
-const std::vector<std::string> kInputKeys = {"scene", "cells", "mode", "aa", "profile",
-                                             "size",  "grid",  "primary_only", "frame_average"};
+const std::vector<std::string> kInputKeys = {"scene", "cells", "mode",         "balance",      "aa",
+                                             "profile", "size", "grid", "primary_only", "frame_average"};
 // The figures' keys, after them.
 const std::vector<std::string> kFigureKeys = {
     "frames",           "width",       "height",      "clock_hz",         "frame_cycles",
     "frame_seconds",    "max_cycles",  "min_cycles",  "max_seconds",      "min_seconds",
     "deviation_percent", "busy_deviation_percent",    "speedup",          "bus_transfers",
     "bus_bytes",        "bus_cycles",  "bus_seconds", "link_messages",    "link_bytes",
-    "capsim_version"};
+    "balance_bus_percent", "tile_wait_cycles", "capsim_version"};
 
 json inputs_of(const json& record) {
   json inputs = json::object();
@@ -50,6 +50,8 @@ json sweep_record(const SweepPoint& p, const SimulationResult& r, const std::str
   const LoadSpread s = load_spread(r);
   const LoadSpread busy = busy_spread(r);
   const LinkTotals links = link_totals(r);
+  Cycles tile_wait;
+  for (const CellReport& c : r.cells) tile_wait += c.tile_wait;
   json record = sweep_inputs(p);
   record.update({{"frames", r.screens.size()},
                  {"width", r.width},
@@ -69,6 +71,8 @@ json sweep_record(const SweepPoint& p, const SimulationResult& r, const std::str
                  {"bus_seconds", r.bus.busy.seconds(hz)},
                  {"link_messages", links.messages},
                  {"link_bytes", links.bytes},
+                 {"balance_bus_percent", balance_bus_percent(r)},
+                 {"tile_wait_cycles", tile_wait.count()},
                  {"capsim_version", version}});
   return record;
 }

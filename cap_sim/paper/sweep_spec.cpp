@@ -23,8 +23,8 @@ using nlohmann::json;
 // The most frames a {"scene", "frames"} takes, as simulate's --frames.
 constexpr int kMaxSweepFrames = 99999;
 
-const std::vector<std::string> kAxes = {"scenes", "sizes",         "profiles", "grid", "primary_only",
-                                        "aa",     "frame_average", "modes",    "cells"};
+const std::vector<std::string> kAxes = {"scenes", "sizes",         "profiles", "grid",  "primary_only",
+                                        "aa",     "frame_average", "balance",  "modes", "cells"};
 
 struct Context {
   std::string file;
@@ -134,12 +134,29 @@ void apply(const Context& c, const std::string& axis, const json& v, const std::
     p.grid = v.is_string() && v.get<std::string>() == "auto" ? 0 : whole(c, v, where, 1, kMaxGridDivisions);
   } else if (axis == "primary_only") {
     p.primary_only = boolean(c, v, where);
+  } else if (axis == "balance") {
+    const std::string scheme = text(c, v, where, "static, demand or demand:TILE");
+    try {
+      p.balance = parse_balance(scheme);
+    } catch (const std::invalid_argument& e) {
+      c.fail(where, fmt::format("{}: {}", v.dump(), e.what()));
+    }
   } else {
     p.frame_average = boolean(c, v, where);
   }
 }
 
 }  // namespace
+
+std::string LeftOutPoints::summary() const {
+  if (total() == 0) return "";
+  std::string reasons;
+  for (const auto& [n, why] : {std::pair{frame_average_outside_dot, "frame_average outside dot mode"},
+                               std::pair{frame_average_on_demand, "frame_average on demand"},
+                               std::pair{demand_per_mode, "demand points repeated per mode"}})
+    if (n > 0) reasons += fmt::format("{}{} {}", reasons.empty() ? "" : ", ", n, why);
+  return fmt::format("{} left out: {}", total(), reasons);
+}
 
 SweepSpec parse_sweep_spec(const std::string& text, const std::string& file) {
   Context c{file, std::filesystem::path(file).parent_path()};
@@ -156,7 +173,7 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& file) {
   const json& axes = doc["axes"];
   for (const auto& [key, value] : axes.items()) {
     if (std::find(kAxes.begin(), kAxes.end(), key) == kAxes.end())
-      c.fail("axes." + key, "is not an axis (accepted: scenes, cells, modes, aa, profiles, sizes, grid, "
+      c.fail("axes." + key, "is not an axis (accepted: scenes, cells, modes, balance, aa, profiles, sizes, grid, "
                             "primary_only, frame_average)");
     if (!value.is_array() || value.empty()) c.fail("axes." + key, "an axis is a list of one value or more");
   }
@@ -176,15 +193,24 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& file) {
       }
     points = std::move(next);
   }
+  // A demand point stands for every mode: it is kept at the first.
+  PixelMode first_mode = PixelMode::Dot;
+  if (axes.contains("modes")) first_mode = *parse_pixel_mode(axes["modes"][0].get<std::string>());
   SweepSpec spec;
   for (SweepPoint& p : points) {
-    // The dot pattern turns only in dot mode: the combination has no meaning
-    // elsewhere, and a cross product of modes and frame_average yields it.
-    if (p.frame_average && p.mode != PixelMode::Dot) {
-      ++spec.skipped;
-      continue;
+    // The dot pattern turns only in dot mode, and demand hands out one frame's
+    // tiles at a time: simulate refuses both combinations, which a cross
+    // product of the axes yields.
+    if (p.balance.on_demand() && p.frame_average) {
+      ++spec.left_out.frame_average_on_demand;
+    } else if (p.balance.on_demand() && p.mode != first_mode) {
+      ++spec.left_out.demand_per_mode;
+    } else if (p.frame_average && p.mode != PixelMode::Dot) {
+      ++spec.left_out.frame_average_outside_dot;
+    } else {
+      if (p.balance.on_demand()) p.mode = PixelMode::Dot;  // simulate's default, which the tiles override
+      spec.points.push_back(std::move(p));
     }
-    spec.points.push_back(std::move(p));
   }
   return spec;
 }
@@ -202,7 +228,8 @@ SweepSpec read_sweep_spec(const std::string& file) { return parse_sweep_spec(rea
 json sweep_inputs(const SweepPoint& p) {
   return {{"scene", p.scene.written},
           {"cells", to_string(p.cells)},
-          {"mode", to_string(p.mode)},
+          {"mode", p.balance.on_demand() ? std::string("tiles") : std::string(to_string(p.mode))},
+          {"balance", to_string(p.balance)},
           {"aa", p.aa_depth},
           {"profile", p.profile},
           {"size", p.width > 0 ? fmt::format("{}x{}", p.width, p.height) : std::string("camera")},

@@ -3,6 +3,7 @@
 // a list of values, and their cross product, the points, each one run of
 // `capsim simulate`. The file is checked whole before any point runs.
 
+#include "machine/balance.h"
 #include "machine/cell_grid.h"
 #include "machine/window_controller.h"
 
@@ -32,7 +33,8 @@ struct SweepScene {
 struct SweepPoint {
   SweepScene scene;
   CellGrid cells{8, 8};
-  PixelMode mode = PixelMode::Dot;
+  PixelMode mode = PixelMode::Dot;  // static points'; a demand point's tiles decide what a cell shows
+  BalanceOptions balance;
   int aa_depth = 0;
   std::string profile = "cap";       // as written
   std::string profile_path = "cap";  // a built-in's name, or the file resolved
@@ -42,16 +44,30 @@ struct SweepPoint {
   bool frame_average = false;
 };
 
+// Points of the cross product that are left out, by why.
+struct LeftOutPoints {
+  int frame_average_outside_dot = 0;  // the dot pattern turns only in dot mode
+  int frame_average_on_demand = 0;    // demand hands out one frame's tiles at a time
+  int demand_per_mode = 0;            // demand takes no mode: one point stands for every mode
+  int total() const { return frame_average_outside_dot + frame_average_on_demand + demand_per_mode; }
+  // "3 left out: 1 frame_average outside dot mode, 2 demand points repeated
+  // per mode"; empty when none is.
+  std::string summary() const;
+};
+
 struct SweepSpec {
   std::vector<SweepPoint> points;  // the cross product, in order
-  int skipped = 0;                 // frame_average points outside dot mode, left out
+  LeftOutPoints left_out;
 };
 
 // The points of a sweep file's text. Axes vary in the order scenes, sizes,
-// profiles, grid, primary_only, aa, frame_average, modes, cells, the last
-// fastest (the cell counts a speed-up compares are neighbours); a missing axis
-// takes simulate's default. Throws SweepSpecError
-// naming `file` and the value at fault.
+// profiles, grid, primary_only, aa, frame_average, balance, modes, cells, the
+// last fastest (the cell counts a speed-up compares are neighbours); a missing
+// axis takes simulate's default. Points simulate would refuse (frame_average
+// outside dot mode or on demand) are left out, and so are the repeats of a
+// demand point over the modes axis: it is kept at the axis's first mode and
+// recorded with the mode "tiles". Throws SweepSpecError naming `file` and the
+// value at fault.
 SweepSpec parse_sweep_spec(const std::string& text, const std::string& file);
 // The same, reading the file.
 SweepSpec read_sweep_spec(const std::string& file);

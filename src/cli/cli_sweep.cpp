@@ -172,8 +172,7 @@ void write_outputs(SweepPlan& plan, const std::string& file, std::size_t ran, co
   console.summary(fmt::format(
       "{}, {}, {}: {} points ({} run{}, {} kept from the earlier run){}\n", plan.csv, plan.json, plan.html, n, ran,
       ranks.size() == 1 ? std::string() : fmt::format(" on {} MPI ranks", ranks.size()), n - ran,
-      plan.spec.skipped ? fmt::format("; {} left out: frame_average outside dot mode", plan.spec.skipped)
-                        : std::string()));
+      plan.spec.left_out.total() ? "; " + plan.spec.left_out.summary() : std::string()));
 }
 
 // Under MPI, rank 0 tells every failure, its own included, before it tells
@@ -258,7 +257,7 @@ Command add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "Simulate every point of a design-space sweep (a JSON file of axes: scenes, cells, modes, aa, profiles, "
+      "Simulate every point of a design-space sweep (a JSON file of axes: scenes, cells, modes, balance, aa, profiles, "
       "sizes, grid, primary_only, frame_average) into PREFIX.csv, PREFIX.json and a page of plots, PREFIX.html "
       "(docs/sweeps.md); built with MPI, under mpirun the ranks share the points");
   accepts(cmd->add_option("SPEC", o->spec.text, "The sweep file (.json)")->required(),

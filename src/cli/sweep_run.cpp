@@ -22,6 +22,7 @@ sim::SimulationResult run_sweep_point(const sim::SweepPoint& p, int threads) {
   config.cells = p.cells;
   config.mode = p.mode;
   config.frame_average = p.frame_average;
+  config.balance = p.balance;
   config.aa = s.aa;
   config.profile = sim::load_cost_profile(p.profile_path);
   config.screen = sim::ScreenFormat::Srgb8;  // as simulate's for a .png; the cycles do not depend on it

@@ -43,10 +43,10 @@ TEST(CliSweep, WritesACsvAndJsonRecordPerPointInOrder) {
   EXPECT_NE(r.out.find("8 points (8 run, 0 kept from the earlier run)"), std::string::npos) << r.out;
   const std::string csv = read_file(dir / "out.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "scene,cells,mode,aa,profile,size,grid,primary_only,frame_average,frames,width,height,clock_hz,"
-            "frame_cycles,frame_seconds,max_cycles,min_cycles,max_seconds,min_seconds,deviation_percent,"
-            "busy_deviation_percent,speedup,bus_transfers,bus_bytes,bus_cycles,bus_seconds,link_messages,"
-            "link_bytes,capsim_version");
+            "scene,cells,mode,balance,aa,profile,size,grid,primary_only,frame_average,frames,width,height,"
+            "clock_hz,frame_cycles,frame_seconds,max_cycles,min_cycles,max_seconds,min_seconds,"
+            "deviation_percent,busy_deviation_percent,speedup,bus_transfers,bus_bytes,bus_cycles,bus_seconds,"
+            "link_messages,link_bytes,balance_bus_percent,tile_wait_cycles,capsim_version");
   EXPECT_EQ(count_of(csv, "\n"), 9);
   const json doc = json::parse(read_file(dir / "out.json"));
   ASSERT_EQ(doc["points"].size(), 8u);
@@ -104,6 +104,38 @@ TEST(CliSweep, FiguresEqualSimulatesReportOfTheSamePoint) {
   }
 }
 
+TEST(CliSweep, ADemandPointIsSimulatesBalanceDemandRun) {
+  TempDir dir;
+  const std::string file = dir / "balance.json";
+  write(file, R"({"axes": {"scenes": [")" + kScenes + R"(/balls.csg"], "cells": ["2x2"], "modes": ["line", "dot"],)" +
+                  R"( "balance": ["static", "demand:16"], "sizes": ["32x24"]}})");
+  const RunResult r = run_capsim("sweep " + file + " -o " + (dir / "out") + " --quiet", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("3 points (3 run, 0 kept from the earlier run); 1 left out: 1 demand points repeated per mode"),
+            std::string::npos)
+      << r.out;
+  const json points = json::parse(read_file(dir / "out.json"))["points"];
+  ASSERT_EQ(points.size(), 3u);
+  EXPECT_EQ(points[0]["balance"], "static");
+  EXPECT_EQ(points[0]["balance_bus_percent"], 0.0);
+  EXPECT_EQ(points[0]["tile_wait_cycles"], 0);
+  const json& demand = points[2];
+  EXPECT_EQ(demand["balance"], "demand:16");
+  EXPECT_EQ(demand["mode"], "tiles");
+  const RunResult sim = run_capsim("simulate " + kScenes + "/balls.csg --size 32x24 --cells 2x2 --balance demand:16 -o " +
+                                       (dir / "s.png") + " --report " + (dir / "r.json"),
+                                   dir);
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const json report = json::parse(read_file(dir / "r.json"));
+  EXPECT_EQ(demand["frame_cycles"], report["total_cycles"]);
+  EXPECT_EQ(demand["deviation_percent"], report["deviation_percent"]);
+  EXPECT_EQ(demand["balance_bus_percent"], report["balancing"]["bus"]["occupancy_percent"]);
+  std::uint64_t waits = 0;
+  for (const json& cell : report["cells"]) waits += cell["tile_wait_cycles"].get<std::uint64_t>();
+  EXPECT_EQ(demand["tile_wait_cycles"], waits);
+  EXPECT_GT(demand["balance_bus_percent"].get<double>(), 0);
+}
+
 TEST(CliSweep, OutputsDoNotDependOnTheThreads) {
   TempDir dir;
   const std::string spec = small_sweep(dir);
@@ -157,7 +189,7 @@ TEST(CliSweep, FrameAverageOutsideDotModeIsLeftOutAndSaid) {
                              R"("sizes": ["16x16"], "frame_average": [false, true]}})");
   const RunResult r = run_capsim("sweep " + (dir / "fa-spec.json") + " -o " + (dir / "fa") + " --quiet", dir);
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_NE(r.out.find("3 points (3 run, 0 kept from the earlier run); 1 left out: frame_average outside dot mode"),
+  EXPECT_NE(r.out.find("3 points (3 run, 0 kept from the earlier run); 1 left out: 1 frame_average outside dot mode"),
             std::string::npos)
       << r.out;
   const json doc = json::parse(read_file(dir / "fa.json"));

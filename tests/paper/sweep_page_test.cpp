@@ -26,7 +26,7 @@ int count_of(const std::string& text, const std::string& what) {
 // the cells grow.
 json record(const json& scene, const std::string& cells, const std::string& mode, int aa, std::uint64_t cycles,
             double d) {
-  return {{"scene", scene},          {"cells", cells},        {"mode", mode},
+  return {{"scene", scene},          {"cells", cells},        {"mode", mode},            {"balance", "static"},
           {"aa", aa},                {"profile", "cap"},      {"size", "16x16"},
           {"grid", "auto"},          {"primary_only", false}, {"frame_average", false},
           {"frames", 1},             {"width", 16},           {"height", 16},
@@ -35,7 +35,7 @@ json record(const json& scene, const std::string& cells, const std::string& mode
           {"min_seconds", cycles / 2000.0}, {"deviation_percent", d}, {"busy_deviation_percent", d},
           {"bus_transfers", 4},      {"bus_bytes", 1234567},  {"bus_cycles", 10},
           {"bus_seconds", 0.01},     {"link_messages", 0},    {"link_bytes", 0},
-          {"capsim_version", "0.1.0"}};
+          {"balance_bus_percent", 0.0}, {"tile_wait_cycles", 0}, {"capsim_version", "0.1.0"}};
 }
 
 // 2 scenes (one a sequence) x 2 modes x 2 aa x 3 cell grids.
@@ -70,8 +70,8 @@ TEST(SweepPage, AFigurePerSceneWithASeriesPerCombinationOfTheOtherAxes) {
 TEST(SweepPage, HeaderNamesTheVaryingAxesAndTheFixedOnes) {
   const std::string page = sweep_page(records(), "small.json", "0.1.0");
   EXPECT_NE(page.find("<title>capsim sweep: small.json</title>"), std::string::npos);
-  EXPECT_NE(page.find("<strong id=\"point-count\">24 points</strong>; the same for every point: profile cap, size "
-                      "16x16, grid auto, primary_only false, frame_average false."),
+  EXPECT_NE(page.find("<strong id=\"point-count\">24 points</strong>; the same for every point: balance static, "
+                      "profile cap, size 16x16, grid auto, primary_only false, frame_average false."),
             std::string::npos);
   EXPECT_NE(page.find("<li><strong>cells</strong>: 2x2, 4x4 and 8x8</li>"), std::string::npos);
   EXPECT_NE(page.find("<li><strong>aa</strong>: 0 and 2</li>"), std::string::npos);

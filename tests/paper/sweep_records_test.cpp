@@ -10,7 +10,7 @@ using nlohmann::json;
 namespace {
 
 json record(const std::string& scene, const std::string& cells, long long frame_cycles) {
-  return {{"scene", scene},        {"cells", cells},   {"mode", "dot"},        {"aa", 0},
+  return {{"scene", scene},        {"cells", cells},   {"mode", "dot"},        {"balance", "static"}, {"aa", 0},
           {"profile", "cap"},      {"size", "16x16"},  {"grid", "auto"},       {"primary_only", false},
           {"frame_average", false}, {"frame_cycles", frame_cycles}};
 }

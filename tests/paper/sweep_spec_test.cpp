@@ -18,6 +18,16 @@ const std::string kScenesDir = std::string(CAPSIM_SOURCE_DIR) + "/scenes";
 // A sweep file in the scenes directory, so that scene paths are relative to it.
 const std::string kFile = kScenesDir + "/sweep.json";
 
+// What simulate's --balance says of a bad scheme.
+std::string balance_error(const std::string& scheme) {
+  try {
+    capsim::sim::parse_balance(scheme);
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
 std::string error_of(const std::string& text) {
   try {
     parse_sweep_spec(text, kFile);
@@ -32,7 +42,8 @@ TEST(SweepSpec, CrossProductVariesTheCellsFastestAndResolvesPaths) {
       R"({"axes": {"cells": ["4x4", "8x8"], "scenes": ["balls.csg", "chess.csg"], "modes": ["line", "dot"]}})",
       kFile);
   ASSERT_EQ(s.points.size(), 8u);
-  EXPECT_EQ(s.skipped, 0);
+  EXPECT_EQ(s.left_out.total(), 0);
+  EXPECT_EQ(s.left_out.summary(), "");
   EXPECT_EQ(s.points[0].scene.files, std::vector<std::string>{kScenesDir + "/balls.csg"});
   EXPECT_EQ(capsim::sim::to_string(s.points[0].cells), "4x4");
   EXPECT_EQ(capsim::sim::to_string(s.points[1].cells), "8x8");
@@ -54,7 +65,8 @@ TEST(SweepSpec, MissingAxesTakeSimulatesDefaults) {
   EXPECT_FALSE(p.primary_only);
   EXPECT_FALSE(p.frame_average);
   EXPECT_EQ(capsim::sim::sweep_inputs(p).dump(),
-            R"({"aa":0,"cells":"8x8","frame_average":false,"grid":"auto","mode":"dot","primary_only":false,)"
+            R"({"aa":0,"balance":"static","cells":"8x8","frame_average":false,"grid":"auto","mode":"dot",)"
+            R"("primary_only":false,)"
             R"("profile":"cap","scene":"balls.csg","size":"camera"})");
 }
 
@@ -72,8 +84,37 @@ TEST(SweepSpec, FrameAverageOutsideDotModeIsLeftOut) {
   const SweepSpec s = parse_sweep_spec(
       R"({"axes": {"scenes": ["balls.csg"], "modes": ["block", "dot"], "frame_average": [false, true]}})", kFile);
   ASSERT_EQ(s.points.size(), 3u);
-  EXPECT_EQ(s.skipped, 1);
+  EXPECT_EQ(s.left_out.frame_average_outside_dot, 1);
+  EXPECT_EQ(s.left_out.summary(), "1 left out: 1 frame_average outside dot mode");
   for (const auto& p : s.points) EXPECT_TRUE(!p.frame_average || p.mode == capsim::sim::PixelMode::Dot);
+}
+
+TEST(SweepSpec, ADemandPointStandsForEveryModeAndTakesNoFrameAveraging) {
+  const SweepSpec s = parse_sweep_spec(
+      R"({"axes": {"scenes": ["balls.csg"], "modes": ["line", "dot"], "frame_average": [false, true],)"
+      R"( "balance": ["static", "demand:16"], "cells": ["4x4", "8x8"]}})",
+      kFile);
+  // Static: line and dot plain, dot frame-averaged; demand: once, plain; each on 2 grids.
+  ASSERT_EQ(s.points.size(), 8u);
+  EXPECT_EQ(s.left_out.frame_average_outside_dot, 2);  // static line, frame averaged
+  EXPECT_EQ(s.left_out.frame_average_on_demand, 4);    // demand, frame averaged, both modes
+  EXPECT_EQ(s.left_out.demand_per_mode, 2);            // demand, plain, at dot (line stands for it)
+  EXPECT_EQ(s.left_out.summary(),
+            "8 left out: 2 frame_average outside dot mode, 4 frame_average on demand, 2 demand points repeated per "
+            "mode");
+  // The balance axis varies before the modes: static line, static dot, demand, then the same frame averaged.
+  const auto inputs = [&](std::size_t i) { return capsim::sim::sweep_inputs(s.points[i]); };
+  EXPECT_EQ(inputs(0)["mode"], "line");
+  EXPECT_EQ(inputs(0)["balance"], "static");
+  EXPECT_EQ(inputs(2)["mode"], "dot");
+  EXPECT_EQ(inputs(4)["mode"], "tiles");
+  EXPECT_EQ(inputs(4)["balance"], "demand:16");
+  EXPECT_EQ(inputs(5)["cells"], "8x8");
+  EXPECT_TRUE(s.points[4].balance.on_demand());
+  EXPECT_EQ(s.points[4].balance.tile_pixels, 16);
+  EXPECT_EQ(inputs(6)["frame_average"], true);
+  EXPECT_EQ(inputs(6)["balance"], "static");
+  EXPECT_EQ(inputs(6)["mode"], "dot");
 }
 
 TEST(SweepSpec, ErrorsNameTheFileAndTheValuesPath) {
@@ -83,6 +124,10 @@ TEST(SweepSpec, ErrorsNameTheFileAndTheValuesPath) {
             kFile + R"(: axes.cells[0]: "big" is not of the form AxB (accepted: 1x1 to 32x32))");
   EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "modes": ["dots"]}})"),
             kFile + R"(: axes.modes[0]: "dots" is not a pixel mode (accepted: block, line or dot))");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "balance": ["static", "demand:15"]}})"),
+            kFile + R"(: axes.balance[1]: "demand:15": )" + balance_error("demand:15"));
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "balance": ["steady"]}})"),
+            kFile + R"(: axes.balance[0]: "steady": )" + balance_error("steady"));
   EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "aa": [2, 9]}})"),
             kFile + R"(: axes.aa[1]: 9 is out of range (accepted: 0 to 8))");
   EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "grid": ["auto", 1.5]}})"),
@@ -97,7 +142,7 @@ TEST(SweepSpec, ErrorsNameTheFileAndTheValuesPath) {
   EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "primary_only": ["yes"]}})"),
             kFile + R"(: axes.primary_only[0]: "yes" is not true or false)");
   EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "colours": [1]}})"),
-            kFile + ": axes.colours: is not an axis (accepted: scenes, cells, modes, aa, profiles, sizes, grid, "
+            kFile + ": axes.colours: is not an axis (accepted: scenes, cells, modes, balance, aa, profiles, sizes, grid, "
                     "primary_only, frame_average)");
   EXPECT_EQ(error_of(R"({"axes": {"scenes": []}})"), kFile + ": axes.scenes: an axis is a list of one value or more");
   EXPECT_EQ(error_of(R"({"axes": {"cells": ["4x4"]}})"), kFile + ": axes.scenes: is required: the scenes to run");
