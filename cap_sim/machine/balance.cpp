@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <charconv>
 #include <stdexcept>
 
@@ -20,8 +21,29 @@ int exact_square_root(int n) {
 
 int BalanceOptions::tile_side() const { return exact_square_root(tile_pixels); }
 
+namespace {
+
+// "steal" or "steal:CHUNK", CHUNK a whole number from 1 to kMaxChunkPixels.
+BalanceOptions parse_steal(const std::string& text) {
+  BalanceOptions b;
+  b.scheme = BalanceScheme::Steal;
+  if (text == "steal") return b;
+  const std::string chunk = text.substr(std::string("steal:").size());
+  int pixels = 0;
+  const auto [end, ec] = std::from_chars(chunk.data(), chunk.data() + chunk.size(), pixels);
+  if (ec != std::errc() || end != chunk.data() + chunk.size() || pixels < 1 || pixels > kMaxChunkPixels)
+    throw std::invalid_argument(
+        fmt::format("steal's chunk \"{}\" is not a whole number of pixels from 1 to {} (e.g. 16)", chunk,
+                    kMaxChunkPixels));
+  b.chunk_pixels = pixels;
+  return b;
+}
+
+}  // namespace
+
 BalanceOptions parse_balance(const std::string& text) {
   if (text == "static") return {};
+  if (text == "steal" || text.rfind("steal:", 0) == 0) return parse_steal(text);
   const std::string demand = "demand";
   if (text == demand) return {BalanceScheme::Demand, kDefaultTilePixels};
   const std::string prefix = demand + ":";
@@ -31,19 +53,28 @@ BalanceOptions parse_balance(const std::string& text) {
     const auto [end, ec] = std::from_chars(tile.data(), tile.data() + tile.size(), pixels);
     if (ec == std::errc() && end == tile.data() + tile.size() && pixels >= 1 && pixels <= kMaxTilePixels &&
         exact_square_root(pixels) > 0)
-      return {BalanceScheme::Demand, pixels};
+      return {BalanceScheme::Demand, pixels, kDefaultChunkPixels};
     throw std::invalid_argument(fmt::format(
         "demand's tile \"{}\" is not a square number of pixels from 1 to {} (e.g. 16, 64, 256)", tile,
         kMaxTilePixels));
   }
   throw std::invalid_argument(
-      fmt::format("\"{}\" is not a balance scheme: static, demand or demand:TILE (TILE a square number of "
-                  "pixels, e.g. demand:64)",
+      fmt::format("\"{}\" is not a balance scheme: static, demand, demand:TILE (TILE a square number of "
+                  "pixels, e.g. demand:64), steal or steal:CHUNK (e.g. steal:16)",
                   text));
 }
 
 std::string to_string(const BalanceOptions& balance) {
-  return balance.on_demand() ? fmt::format("demand:{}", balance.tile_pixels) : "static";
+  if (balance.on_demand()) return fmt::format("demand:{}", balance.tile_pixels);
+  if (balance.stealing()) return fmt::format("steal:{}", balance.chunk_pixels);
+  return "static";
+}
+
+int chunk_count(int pixels, int chunk_pixels) { return (pixels + chunk_pixels - 1) / chunk_pixels; }
+
+ChunkRange chunk_range(int k, int pixels, int chunk_pixels) {
+  const int first = k * chunk_pixels;
+  return {first, std::min(pixels, first + chunk_pixels) - first};
 }
 
 WindowLayout tile_layout(const BalanceOptions& balance, int width, int height) {

@@ -2,6 +2,9 @@
 
 #include "machine/balance.h"
 #include "machine/frame_protocol.h"
+#include "machine/unit_memory.h"
+
+#include "capsim/antialias.h"
 
 #include <fmt/core.h>
 
@@ -15,8 +18,14 @@ Cell::Cell(CellId id, int timeline_track, const Wiring& wiring)
       wire_(wiring),
       clock_(wiring.kernel, wiring.timeline, timeline_track, cell_name(id), record_.busy),
       bus_inbox_(wiring.kernel),
-      link_inbox_(wiring.kernel) {
+      link_inbox_(wiring.kernel),
+      steal_inbox_(wiring.kernel),
+      returns_inbox_(wiring.kernel) {
   video_.reserve(wiring.frames.size());
+  if (wiring.chunk_pixels > 0)
+    for (const Direction d : {Direction::North, Direction::East, Direction::South, Direction::West})
+      if (const auto n = wiring.grid.neighbour(id, d))
+        if (std::find(neighbours_.begin(), neighbours_.end(), *n) == neighbours_.end()) neighbours_.push_back(*n);
   // On demand the tiles stay with the frame: any cell may trace any of them.
   if (!wiring.on_demand)
     for (FrameWork& f : wiring.frames) video_.push_back(std::move(f.cells.at(id)));
@@ -30,6 +39,8 @@ Process Cell::run() {
     co_await receive(u);
     if (wire_.on_demand) {
       co_await trace_tiles(unit);
+    } else if (wire_.chunk_pixels > 0) {
+      co_await trace_stealing(unit);
     } else if (!wire_.antialiased) {
       co_await trace(unit);
     } else {
@@ -197,6 +208,196 @@ Task<> Cell::trace_tile(int f, const BusTransfer& grant, Cycles requested) {
   record_.pixels += static_cast<std::uint64_t>(pixels);
 }
 
+void Cell::deliver_link(const LinkMessage& m) {
+  switch (m.packet.kind) {
+    case LinkKind::Corners:
+      link_inbox_.deliver(m);
+      return;
+    case LinkKind::StealRequest:
+      record_.balance_bytes_received += m.bytes;
+      answer_steal_request(m);
+      return;
+    case LinkKind::Work:
+    case LinkKind::NoWork:
+      steal_inbox_.deliver(m);
+      return;
+    case LinkKind::Pixels:
+      returns_inbox_.deliver(m);
+      return;
+  }
+}
+
+// Stealing (balance.h). Plain, the chunks are of its tracing; antialiased, the
+// corners are traced and exchanged as statically (the exchange needs every
+// owner's corners) and the chunks are of phase 3, the subdivision. The unit is
+// one frame.
+Task<> Cell::trace_stealing(const DistributionUnit& unit) {
+  if (unit.frames != 1) throw std::logic_error("chunks are stolen one frame at a time");
+  const int f = unit.first_frame;
+  if (wire_.antialiased) {
+    co_await trace_corners(unit);
+    co_await exchange_corners(*unit.exchange);
+    record_.work += video_[f].corner_work;
+    record_.ops += video_[f].corner_ops;
+    record_.rays += video_[f].corner_ops.rays;
+    record_.frame_busy[f] += video_[f].corner_work.total();
+  }
+  const Cycles start = clock_.now();
+  record_.frame_write_start[f] = start;
+  co_await trace_own_chunks(f);
+  co_await steal_from_neighbours(f);
+  co_await collect_returned_pixels(f);
+  if (wire_.antialiased) record_.subdivide += clock_.now() - start;
+}
+
+// Its own chunks, front to back, while thieves take from the back; requests
+// that came before it opened the frame are answered as it does.
+Task<> Cell::trace_own_chunks(int f) {
+  const TracedCell& own = video_[f];
+  const int pixels = wire_.frames[f].layout.window(id_).pixel_count();
+  queue_ = {f, 0, static_cast<int>(own.chunk_work.size())};
+  std::vector<LinkMessage> waiting;
+  waiting.swap(deferred_);
+  for (const LinkMessage& m : waiting) answer_steal_request(m);
+  while (queue_.front < queue_.back) {
+    const int k = queue_.front++;
+    const Cycles begin = clock_.now();
+    co_await clock_.compute(own.chunk_work[k].total(), frame_name(fmt::format("trace chunk {}", k), f),
+                            wire_.antialiased ? "subdivision" : "tracing",
+                            wire_.antialiased ? SpanCategory::Subdivide : SpanCategory::Compute);
+    count_chunk(own, f, k, pixels);
+    record_.chunk_runs.push_back({f, id_, k, 1, begin, clock_.now()});
+  }
+}
+
+// Asks its neighbours in turn for work; a neighbour that gives is asked again
+// first; it stops when every neighbour has answered "no work" in a row.
+Task<> Cell::steal_from_neighbours(int f) {
+  std::size_t refused = 0, next = 0;
+  while (!neighbours_.empty() && refused < neighbours_.size()) {
+    const CellId victim = neighbours_[next % neighbours_.size()];
+    LinkPacket request{LinkKind::StealRequest};
+    request.frame = f;
+    const Cycles asking = clock_.now();
+    co_await wire_.links.send(id_, victim, kStealRequestBytes, request);
+    record_.comm += clock_.now() - asking;
+    clock_.span(fmt::format("steal request to {}", cell_name(victim)), SpanCategory::Message, asking, clock_.now(),
+                kStealRequestBytes);
+    ++record_.steal_requests;
+    record_.balance_bytes_sent += kStealRequestBytes;
+    const Cycles waiting = clock_.now();
+    const LinkMessage answer = co_await steal_inbox_.receive();
+    record_.balance_bytes_received += answer.bytes;
+    if (clock_.now() > waiting) {
+      ++record_.steal_waits;
+      record_.steal_wait += clock_.now() - waiting;
+      clock_.wait("wait for work", waiting, clock_.now());
+    }
+    if (answer.packet.kind == LinkKind::NoWork) {
+      ++record_.steals_refused;
+      ++refused;
+      ++next;
+      continue;
+    }
+    refused = 0;
+    co_await trace_stolen(answer);
+  }
+}
+
+// The chunks a victim gave, traced from its window; their pixels go back to
+// its video memory over the links.
+Task<> Cell::trace_stolen(const LinkMessage& work) {
+  const LinkPacket& p = work.packet;
+  const TracedCell& window = wire_.video_of(p.owner, p.frame);
+  const int pixels = wire_.frames[p.frame].layout.window(p.owner).pixel_count();
+  const Cycles begin = clock_.now();
+  int traced = 0;
+  for (int k = p.first_chunk; k < p.first_chunk + p.chunks; ++k) {
+    co_await clock_.compute(window.chunk_work[k].total(),
+                            frame_name(fmt::format("trace chunk {} of {}", k, cell_name(p.owner)), p.frame),
+                            wire_.antialiased ? "subdivision" : "tracing",
+                            wire_.antialiased ? SpanCategory::Subdivide : SpanCategory::Compute);
+    count_chunk(window, p.frame, k, pixels);
+    traced += chunk_range(k, pixels, wire_.chunk_pixels).pixels;
+  }
+  record_.chunk_runs.push_back({p.frame, p.owner, p.first_chunk, p.chunks, begin, clock_.now()});
+  record_.chunks_stolen += static_cast<std::uint64_t>(p.chunks);
+  const std::uint64_t bytes = kStolenWorkHeaderBytes + static_cast<std::uint64_t>(traced) * kVideoPixelBytes;
+  LinkPacket back = p;
+  back.kind = LinkKind::Pixels;
+  const Cycles sending = clock_.now();
+  co_await wire_.links.send(id_, p.owner, bytes, back);
+  record_.comm += clock_.now() - sending;
+  clock_.span(fmt::format("send pixels to {}", cell_name(p.owner)), SpanCategory::Message, sending, clock_.now(),
+              bytes);
+  record_.balance_bytes_sent += bytes;
+}
+
+// Every chunk it gave away is back in its video memory. It gives none once its
+// own are all started, so the count is final here.
+Task<> Cell::collect_returned_pixels(int f) {
+  const Cycles waiting = clock_.now();
+  for (; grants_out_ > 0; --grants_out_) {
+    const LinkMessage m = co_await returns_inbox_.receive();
+    if (m.packet.frame != f || m.packet.owner != id_)
+      throw std::logic_error(fmt::format("{} took in pixels of another window or frame", cell_name(id_)));
+    record_.balance_bytes_received += m.bytes;
+    record_.returned.push_back({f, m.packet.first_chunk, m.packet.chunks, m.arrived});
+  }
+  clock_.wait("wait for pixels", waiting, clock_.now());
+}
+
+// The cell's link interface answers at once, without the program: half of its
+// unstarted chunks (rounded down) from the back, or "no work". A request for
+// a frame it has not opened yet waits until it does.
+void Cell::answer_steal_request(const LinkMessage& request) {
+  if (request.packet.frame != queue_.frame) {
+    deferred_.push_back(request);
+    return;
+  }
+  ++record_.requests_answered;
+  const int give = (queue_.back - queue_.front) / 2;
+  if (give == 0) {
+    LinkPacket no{LinkKind::NoWork};
+    no.frame = queue_.frame;
+    record_.balance_bytes_sent += kNoWorkBytes;
+    wire_.kernel.spawn(send_from_link_interface(request.from, kNoWorkBytes, no));
+    return;
+  }
+  queue_.back -= give;
+  record_.chunks_given += static_cast<std::uint64_t>(give);
+  ++grants_out_;
+  LinkPacket work{LinkKind::Work};
+  work.frame = queue_.frame;
+  work.owner = id_;
+  work.first_chunk = queue_.back;
+  work.chunks = give;
+  std::uint64_t bytes = kStolenWorkHeaderBytes;
+  if (wire_.antialiased) {
+    // The thief subdivides from every corner of each pixel, which this cell
+    // holds after the exchange.
+    const int pixels = wire_.frames[queue_.frame].layout.window(id_).pixel_count();
+    std::uint64_t given = 0;
+    for (int k = work.first_chunk; k < work.first_chunk + give; ++k)
+      given += static_cast<std::uint64_t>(chunk_range(k, pixels, wire_.chunk_pixels).pixels);
+    bytes += given * 4 * kScreenSampleBytes;
+  }
+  record_.balance_bytes_sent += bytes;
+  wire_.kernel.spawn(send_from_link_interface(request.from, bytes, work));
+}
+
+Process Cell::send_from_link_interface(CellId to, std::uint64_t bytes, LinkPacket packet) {
+  co_await wire_.links.send(id_, to, bytes, packet);
+}
+
+void Cell::count_chunk(const TracedCell& window, int f, int k, int window_pixels) {
+  record_.frame_busy[f] += window.chunk_work[k].total();
+  record_.work += window.chunk_work[k];
+  record_.ops += window.chunk_ops[k];
+  record_.rays += window.chunk_ops[k].rays;
+  record_.pixels += static_cast<std::uint64_t>(chunk_range(k, window_pixels, wire_.chunk_pixels).pixels);
+}
+
 // A step's messages, in order; the sender continues as each has left it. What
 // the horizontal step relays must have come in the vertical one.
 Task<> Cell::send_corners(const CornerExchange& exchange, ExchangeStep step) {
@@ -206,7 +407,7 @@ Task<> Cell::send_corners(const CornerExchange& exchange, ExchangeStep step) {
     if (step == ExchangeStep::Horizontal) check_holds(m, exchange);
     const std::uint64_t bytes = m.corners.size() * kScreenSampleBytes;
     const Cycles begin = clock_.now();
-    co_await wire_.links.send(id_, m.to, bytes, CornerPacket{step, i});
+    co_await wire_.links.send(id_, m.to, bytes, LinkPacket{LinkKind::Corners, step, i});
     record_.comm += clock_.now() - begin;
     clock_.span(fmt::format("send corners to {}", cell_name(m.to)), SpanCategory::Message, begin, clock_.now(),
                 bytes);

@@ -18,6 +18,7 @@
 #include "capsim/render.h"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,6 +40,11 @@ class Cell {
     // Balanced on demand: each frame's work is its tiles (frames[f].cells[t],
     // laid out by frames[f].layout), traced as the host grants them.
     bool on_demand = false;
+    // Stealing (balance.h): the windows are cut into chunks of chunk_pixels
+    // pixels; video_of(cell, frame) is that cell's traced window, which a
+    // thief reads the chunks it took from.
+    int chunk_pixels = 0;
+    std::function<const TracedCell&(CellId, int)> video_of;
   };
 
   // Takes this cell's traced work out of every frame of wiring.frames.
@@ -53,7 +59,11 @@ class Cell {
   Process run();
 
   Mailbox<BusTransfer>& bus_inbox() { return bus_inbox_; }
-  Mailbox<LinkMessage>& link_inbox() { return link_inbox_; }
+  // A message the links delivered to this cell: the corner exchange's go to
+  // its program; stealing, a request is answered at once by the cell's link
+  // interface (answer_steal_request), and answers and returned pixels go to
+  // its program.
+  void deliver_link(const LinkMessage& m);
   const CellRecord& record() const { return record_; }
   CellId id() const { return id_; }
   // Its video memory of a frame, once traced: the samples, in its window's
@@ -77,6 +87,19 @@ class Cell {
   Process request_tile_after(Cycles delay);
   Task<BusTransfer> take_answer();
   Task<> trace_tile(int frame, const BusTransfer& grant, Cycles requested);
+  // Stealing (balance.h): trace its own chunks from the front while
+  // neighbours may take them from the back, then take chunks from its
+  // neighbours, then wait for the pixels of those it gave away.
+  Task<> trace_stealing(const DistributionUnit& unit);
+  Task<> trace_own_chunks(int frame);
+  Task<> steal_from_neighbours(int frame);
+  Task<> trace_stolen(const LinkMessage& work);
+  Task<> collect_returned_pixels(int frame);
+  void answer_steal_request(const LinkMessage& request);
+  // A message its link interface sends while the program goes on.
+  Process send_from_link_interface(CellId to, std::uint64_t bytes, LinkPacket packet);
+  // The work a chunk moves and what it counts, added to this cell's record.
+  void count_chunk(const TracedCell& window, int frame, int chunk, int window_pixels);
   // The two halves of each step of exchange_corners.
   Task<> send_corners(const CornerExchange& exchange, ExchangeStep step);
   Task<> receive_corners(const CornerExchange& exchange, ExchangeStep step);
@@ -108,6 +131,19 @@ class Cell {
   std::vector<CornerIndex> unit_received_;  // corners taken in during this unit's exchange
   std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced (static)
   Cycles last_request_;  // on demand: when its latest request left
+  // Stealing: its unstarted chunks of the frame it works on are front to
+  // back - 1 (it traces from the front, thieves take from the back); requests
+  // for a frame it has not opened wait in deferred_.
+  struct StealQueue {
+    int frame = -1;
+    int front = 0, back = 0;
+  };
+  StealQueue queue_;
+  std::vector<LinkMessage> deferred_;
+  int grants_out_ = 0;  // chunks runs it gave away this frame
+  Mailbox<LinkMessage> steal_inbox_;    // answers to its requests
+  Mailbox<LinkMessage> returns_inbox_;  // pixels others traced for it
+  std::vector<CellId> neighbours_;      // distinct, N, E, S, W
 };
 
 }  // namespace capsim::sim

@@ -24,6 +24,24 @@ struct TileRun {
   Cycles start, end;  // the cell traced it
 };
 
+// Chunks a cell traced, stealing (balance.h): `chunks` chunks from
+// first_chunk of the window of cell `owner` (its own, or a victim's) in frame
+// `frame`, from start to end.
+struct ChunkRun {
+  int frame = 0;
+  CellId owner = 0;
+  int first_chunk = 0, chunks = 0;
+  Cycles start, end;
+};
+
+// Chunks of a cell's window that another cell traced, stealing: when their
+// pixels were in its video memory.
+struct ReturnedChunks {
+  int frame = 0;
+  int first_chunk = 0, chunks = 0;
+  Cycles arrived;
+};
+
 // What a cell measured about its run.
 struct CellRecord {
   Cycles busy;    // tracing (corners, pixels, subdivision), all frames
@@ -53,6 +71,17 @@ struct CellRecord {
   std::uint64_t tile_waits = 0;
   Cycles tile_wait, longest_tile_wait;
   std::uint64_t balance_bytes_sent = 0, balance_bytes_received = 0;
+  // Stealing: the chunks it traced, in order (its own, then the stolen); the
+  // pixels others traced for it, as they came back; as a thief, the requests
+  // it sent, those answered "no work", its waits for an answer and the chunks
+  // it took; as a victim, the requests it answered and the chunks it gave.
+  // Its balancing bytes are those over the links: requests, answers and
+  // pixels, sent and taken in.
+  std::vector<ChunkRun> chunk_runs;
+  std::vector<ReturnedChunks> returned;
+  std::uint64_t steal_requests = 0, steals_refused = 0, steal_waits = 0, chunks_stolen = 0;
+  Cycles steal_wait;
+  std::uint64_t requests_answered = 0, chunks_given = 0;
 };
 
 struct CellReport : CellRecord {

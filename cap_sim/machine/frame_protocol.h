@@ -14,8 +14,10 @@
 //   cell -> host       request     the cell asks for a tile
 //   host -> cell       grant       a tile, or
 //   host -> cell       no tile     none is left
-// Over the neighbour links, antialiased only, from cell to cell: the corner
-// exchange's messages (CornerPacket; corner_exchange.h plans them).
+// Over the neighbour links, from cell to cell (LinkPacket): antialiased, the
+// corner exchange's messages (corner_exchange.h plans them); stealing
+// (balance.h), the requests, their answers and the pixels traced for another
+// cell.
 
 #include <cstddef>
 #include <cstdint>
@@ -62,19 +64,41 @@ inline constexpr std::uint64_t kDoneMessageBytes = 4;   // the sender's cell id
 // horizontally (corner_exchange.h).
 enum class ExchangeStep : std::uint8_t { Vertical, Horizontal };
 
-// A message of the corner exchange: its step and its place among its sender's
-// messages of that step (CornerExchange::sends(sender, step)[index]), where
-// its receiver finds which corners it carries.
-struct CornerPacket {
+// What a message over the links carries.
+enum class LinkKind : std::uint8_t { Corners, StealRequest, Work, NoWork, Pixels };
+
+// A message over the links. Corners: its step and its place among its
+// sender's messages of that step (CornerExchange::sends(sender, step)[index]),
+// where its receiver finds which corners it carries. Work and pixels: the
+// chunks first_chunk to first_chunk + chunks - 1 of frame `frame` of the
+// window of cell `owner` (the victim's).
+struct LinkPacket {
+  LinkKind kind = LinkKind::Corners;
   ExchangeStep step = ExchangeStep::Vertical;
   std::size_t index = 0;
+  int frame = 0;
+  int owner = 0;
+  int first_chunk = 0, chunks = 0;
 
-  bool operator==(const CornerPacket&) const = default;
+  bool operator==(const LinkPacket&) const = default;
 };
 
-// Its name on the link tracks: "corners (vertical step)".
-constexpr std::string_view to_string(const CornerPacket& p) {
-  return p.step == ExchangeStep::Vertical ? "corners (vertical step)" : "corners (horizontal step)";
+// Its name on the link tracks: "corners (vertical step)", "steal request",
+// "work", "no work", "pixels".
+constexpr std::string_view to_string(const LinkPacket& p) {
+  switch (p.kind) {
+    case LinkKind::Corners:
+      return p.step == ExchangeStep::Vertical ? "corners (vertical step)" : "corners (horizontal step)";
+    case LinkKind::StealRequest:
+      return "steal request";
+    case LinkKind::Work:
+      return "work";
+    case LinkKind::NoWork:
+      return "no work";
+    case LinkKind::Pixels:
+      return "pixels";
+  }
+  return "";
 }
 
 }  // namespace capsim::sim

@@ -133,7 +133,8 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
       std::vector<TracedCell> traced =
           trace_cells(tracer, layout, config.profile.costs, threads, one ? &progress : nullptr, config.aa,
                       config.screen, config.completion_cycles,
-                      config.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner);
+                      config.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner,
+                      config.balance.stealing() ? config.balance.chunk_pixels : 0);
       work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config.profile));
       if (!one) progress.advance(1);
     }

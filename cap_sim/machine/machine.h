@@ -48,8 +48,10 @@ struct MachineConfig {
   // tests of the exchange; off, a cell keeps only their count.
   bool keep_received_corners = false;
   // How the cells share a frame's pixels (balance.h): static, by the windows
-  // of `mode`, or on demand, tile by tile (antialiased, a tile traces every
-  // corner of its pixels itself); on demand frame averaging is refused.
+  // of `mode`; on demand, tile by tile (antialiased, a tile traces every
+  // corner of its pixels itself); or stealing, the windows of `mode` cut into
+  // chunks that idle neighbours take (antialiased, the subdivision's). On
+  // demand and stealing, frame averaging is refused.
   BalanceOptions balance;
 };
 
@@ -105,6 +107,13 @@ struct SimulationResult {
   Host::Balancing balancing;
   BusTotals balance_bus;  // the bus's requests, grants and "no tile" answers
   std::vector<std::vector<CellId>> tile_cells;
+  // Stealing: per frame, per cell's window, per chunk (balance.h), the cell
+  // that traced it; and the links' stealing messages (requests, answers,
+  // pixels sent back).
+  std::vector<std::vector<std::vector<CellId>>> chunk_cells;
+  struct StealTraffic {
+    std::uint64_t messages = 0, bytes = 0;
+  } steal_links;
   std::vector<LinkTraffic> links;          // every link that carried a message
   std::vector<LinkMessage> link_messages;  // in order of arrival
   Timeline timeline;
@@ -118,7 +127,7 @@ FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std
 
 // Throws std::invalid_argument when the config asks for what the machine
 // does not model: frame averaging outside dot mode; balanced on demand, a
-// tile that is not square, or frame averaging.
+// tile that is not square, or frame averaging; stealing, frame averaging.
 void check_balance(const MachineConfig& config);
 
 // Runs the frames on the machine, in the units config asks for (an unresolved

@@ -59,7 +59,7 @@ std::vector<CellId> NeighbourLinks::route(CellId from, CellId to) const {
   return cells;
 }
 
-NeighbourLinks::SendAwaiter NeighbourLinks::send(CellId from, CellId to, std::uint64_t bytes, CornerPacket packet) {
+NeighbourLinks::SendAwaiter NeighbourLinks::send(CellId from, CellId to, std::uint64_t bytes, LinkPacket packet) {
   const int n = grid_.cell_count();
   if (from < 0 || from >= n || to < 0 || to >= n || from == to)
     throw std::logic_error("link message needs two different cells of the grid");

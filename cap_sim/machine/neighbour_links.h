@@ -23,7 +23,7 @@
 namespace capsim::sim {
 
 struct LinkMessage {
-  CornerPacket packet;
+  LinkPacket packet;
   CellId from = 0;
   CellId to = 0;
   std::uint64_t bytes = 0;
@@ -46,7 +46,7 @@ struct LinkTraffic {
 struct LinkHop {
   CellId cell = 0;
   Direction direction = Direction::North;
-  CornerPacket packet;
+  LinkPacket packet;
   Cycles begin, end;
   std::uint64_t bytes = 0;
 };
@@ -72,7 +72,7 @@ class NeighbourLinks {
     void await_suspend(std::coroutine_handle<> h) { links.start(std::move(message), h); }
     void await_resume() const noexcept {}
   };
-  SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, CornerPacket packet);
+  SendAwaiter send(CellId from, CellId to, std::uint64_t bytes, LinkPacket packet);
 
   // Delivered messages, in order of arrival.
   const std::vector<LinkMessage>& log() const { return log_; }

@@ -178,7 +178,8 @@ MachineParts::MachineParts(std::vector<FrameWork>& frames_in, std::vector<Distri
     cells.push_back(std::make_unique<Cell>(
         id, track,
         Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased, config.keep_received_corners,
-                     config.balance.on_demand()}));
+                     config.balance.on_demand(), config.balance.stealing() ? config.balance.chunk_pixels : 0,
+                     [this](CellId c, int f) -> const TracedCell& { return cells.at(c)->video_memory(f); }}));
   }
   bus.on_delivery([this](const BusTransfer& t) {
     if (t.receiver == kAllCells) {
@@ -189,7 +190,7 @@ MachineParts::MachineParts(std::vector<FrameWork>& frames_in, std::vector<Distri
       cells.at(t.receiver)->bus_inbox().deliver(t);
     }
   });
-  links.on_delivery([this](const LinkMessage& m) { cells.at(m.to)->link_inbox().deliver(m); });
+  links.on_delivery([this](const LinkMessage& m) { cells.at(m.to)->deliver_link(m); });
 }
 
 void MachineParts::unit_begins(std::size_t u) {
@@ -234,6 +235,11 @@ void record_traffic(MachineParts& m, SimulationResult& result) {
                     SpanCategory::Link, h.begin, h.end, h.bytes);
   result.links = m.links.traffic();
   result.link_messages = m.links.log();
+  for (const LinkMessage& l : result.link_messages)
+    if (l.packet.kind != LinkKind::Corners) {
+      ++result.steal_links.messages;
+      result.steal_links.bytes += l.bytes;
+    }
   result.events = m.kernel.events_run();
 }
 
@@ -325,6 +331,65 @@ void check_tile_video_memory(const MachineParts& m, const MachineConfig& config,
   }
 }
 
+// Stealing: which cell traced each chunk of each window, per frame; every
+// chunk exactly once.
+std::vector<std::vector<std::vector<CellId>>> chunk_tracers(const MachineParts& m) {
+  std::vector<std::vector<std::vector<CellId>>> out;
+  for (std::size_t f = 0; f < m.frames.size(); ++f) {
+    out.emplace_back();
+    for (const auto& cell : m.cells)
+      out.back().emplace_back(cell->video_memory(static_cast<int>(f)).chunk_work.size(), -1);
+  }
+  for (const auto& cell : m.cells)
+    for (const ChunkRun& r : cell->record().chunk_runs)
+      for (int k = r.first_chunk; k < r.first_chunk + r.chunks; ++k) {
+        CellId& tracer = out.at(r.frame).at(r.owner).at(k);
+        if (tracer >= 0)
+          throw std::logic_error(fmt::format("chunk {} of {} in frame {} was traced twice", k,
+                                             sender_name(r.owner, m.grid), r.frame));
+        tracer = cell->id();
+      }
+  for (std::size_t f = 0; f < out.size(); ++f)
+    for (std::size_t w = 0; w < out[f].size(); ++w)
+      for (std::size_t k = 0; k < out[f][w].size(); ++k)
+        if (out[f][w][k] < 0)
+          throw std::logic_error(fmt::format("chunk {} of {} in frame {} was never traced", k,
+                                             sender_name(static_cast<CellId>(w), m.grid), f));
+  return out;
+}
+
+// Stealing: when each pixel of a frame was in its owner's video memory: a
+// chunk the owner traced as its pixels' write cycles pass from the chunk's
+// start; a stolen chunk when its pixels came back.
+std::vector<std::uint64_t> stolen_completion_cycles(const MachineParts& m, int f, const MachineConfig& config) {
+  const WindowLayout& layout = m.frames[f].layout;
+  std::vector<std::vector<std::uint64_t>> written(m.cells.size());
+  for (const auto& cell : m.cells) {
+    const TracedCell& video = cell->video_memory(f);
+    const int pixels = layout.window(cell->id()).pixel_count();
+    if (video.write_cycles.size() != static_cast<std::size_t>(pixels))
+      throw std::logic_error("completion cycles need the write cycles traced ahead (trace_cells' keep_write_cycles)");
+    std::vector<std::uint64_t>& mine = written[cell->id()];
+    mine.assign(pixels, 0);
+    for (const ChunkRun& r : cell->record().chunk_runs) {
+      if (r.frame != f || r.owner != cell->id()) continue;
+      const ChunkRange range = chunk_range(r.first_chunk, pixels, config.balance.chunk_pixels);
+      std::uint64_t clock = r.start.count();
+      for (int k = range.first_pixel; k < range.first_pixel + range.pixels; ++k) mine[k] = clock += video.write_cycles[k];
+    }
+    for (const ReturnedChunks& r : cell->record().returned) {
+      if (r.frame != f) continue;
+      for (int c = r.first_chunk; c < r.first_chunk + r.chunks; ++c) {
+        const ChunkRange range = chunk_range(c, pixels, config.balance.chunk_pixels);
+        for (int k = range.first_pixel; k < range.first_pixel + range.pixels; ++k) mine[k] = r.arrived.count();
+      }
+    }
+  }
+  std::vector<std::uint64_t> out(static_cast<std::size_t>(layout.width()) * layout.height());
+  for_each_window_pixel(layout, [&](CellId w, int k, std::size_t s) { out[s] = written[w][k]; });
+  return out;
+}
+
 // Every frame as the video bus showed it: the cells' windows, or on demand
 // the tiles where their cells' window controllers put them.
 void compose_screens(const MachineParts& m, const MachineConfig& config, SimulationResult& result) {
@@ -347,6 +412,7 @@ void compose_screens(const MachineParts& m, const MachineConfig& config, Simulat
     result.tile_cells = std::move(owners.cell);
     return;
   }
+  if (config.balance.stealing()) result.chunk_cells = chunk_tracers(m);
   for (std::size_t f = 0; f < m.frames.size(); ++f) {
     std::vector<const TracedCell*> video;
     std::vector<Cycles> write_start;
@@ -354,7 +420,11 @@ void compose_screens(const MachineParts& m, const MachineConfig& config, Simulat
       video.push_back(&cell->video_memory(static_cast<int>(f)));
       write_start.push_back(cell->record().frame_write_start.at(f));
     }
-    result.screens.push_back(compose_frame(m.frames[f].layout, video, write_start, config));
+    MachineConfig compose = config;
+    compose.completion_cycles = config.completion_cycles && !config.balance.stealing();
+    result.screens.push_back(compose_frame(m.frames[f].layout, video, write_start, compose));
+    if (config.completion_cycles && config.balance.stealing())
+      result.screens.back().completion_cycles = stolen_completion_cycles(m, static_cast<int>(f), config);
   }
 }
 
@@ -363,6 +433,8 @@ void compose_screens(const MachineParts& m, const MachineConfig& config, Simulat
 void check_balance(const MachineConfig& config) {
   if (config.frame_average && config.mode != PixelMode::Dot)
     throw std::invalid_argument("frame averaging turns the dot pattern: it needs dot mode");
+  if (config.balance.stealing() && config.frame_average)
+    throw std::invalid_argument("stealing takes chunks of one frame at a time: no frame averaging");
   if (!config.balance.on_demand()) return;
   if (config.balance.tile_side() < 1)
     throw std::invalid_argument(fmt::format("a tile of {} pixels is not a square", config.balance.tile_pixels));

@@ -5,6 +5,7 @@
 // page write every statistic of a table from these declarations, in their
 // order; adding one is a row here (and the counter it reads).
 
+#include "machine/balance.h"
 #include "machine/cell_record.h"
 #include "machine/neighbour_links.h"
 
@@ -20,13 +21,14 @@ enum class StatisticUnit {
   Cycles,  // of the profile's clock; JSON "<name>_cycles"; seconds where a table says so
 };
 
-// When a statistic is kept: always, only when the run antialiases, or only
-// when it is balanced on demand.
-enum class StatisticScope { Always, Antialiased, Demand };
+// When a statistic is kept: always, only when the run antialiases, only when
+// it is balanced on demand, or only when it steals.
+enum class StatisticScope { Always, Antialiased, Demand, Steal };
 
-constexpr bool statistic_kept(StatisticScope scope, bool antialiased, bool on_demand) {
+constexpr bool statistic_kept(StatisticScope scope, bool antialiased, BalanceScheme balance) {
   return scope == StatisticScope::Always || (scope == StatisticScope::Antialiased && antialiased) ||
-         (scope == StatisticScope::Demand && on_demand);
+         (scope == StatisticScope::Demand && balance == BalanceScheme::Demand) ||
+         (scope == StatisticScope::Steal && balance == BalanceScheme::Steal);
 }
 
 template <class Part>
@@ -43,7 +45,7 @@ struct Statistic {
   std::string json_key() const { return unit == StatisticUnit::Cycles ? std::string(name) + "_cycles" : name; }
 };
 
-inline constexpr std::array<Statistic<CellReport>, 16> kCellStatistics = {{
+inline constexpr std::array<Statistic<CellReport>, 23> kCellStatistics = {{
     {"pixels", StatisticUnit::Count, StatisticScope::Always, "pixels it traced, all frames", "pixels", 8,
      "Pixels", [](const CellReport& c) { return c.pixels; }},
     {"rays", StatisticUnit::Count, StatisticScope::Always, "rays it traced, every kind", "rays", 9, "Rays",
@@ -81,6 +83,26 @@ inline constexpr std::array<Statistic<CellReport>, 16> kCellStatistics = {{
     {"balance_bytes", StatisticUnit::Bytes, StatisticScope::Demand,
      "balancing bytes on the bus: its requests sent, the grants and \"no tile\" it took in", "balance B", 10,
      "Balance bytes", [](const CellReport& c) { return c.balance_bytes_sent + c.balance_bytes_received; }},
+    {"chunks", StatisticUnit::Count, StatisticScope::Steal, "chunks it traced, its own and stolen", "chunks", 8,
+     "Chunks", [](const CellReport& c) {
+       std::uint64_t n = 0;
+       for (const ChunkRun& r : c.chunk_runs) n += static_cast<std::uint64_t>(r.chunks);
+       return n;
+     }},
+    {"chunks_stolen", StatisticUnit::Count, StatisticScope::Steal, "chunks it took from its neighbours",
+     "stolen", 8, "Stolen", [](const CellReport& c) { return c.chunks_stolen; }},
+    {"chunks_given", StatisticUnit::Count, StatisticScope::Steal, "chunks of its window its neighbours took",
+     "given", 8, "Given", [](const CellReport& c) { return c.chunks_given; }},
+    {"steal_requests", StatisticUnit::Count, StatisticScope::Steal, "requests for work it sent its neighbours",
+     "asked", 7, "Requests", [](const CellReport& c) { return c.steal_requests; }},
+    {"steals_refused", StatisticUnit::Count, StatisticScope::Steal, "of those, answered \"no work\"", "refused", 8,
+     "Refused", [](const CellReport& c) { return c.steals_refused; }},
+    {"steal_wait", StatisticUnit::Cycles, StatisticScope::Steal,
+     "its waits for an answer to a request, summed", "steal wait cyc", 14, "Steal wait",
+     [](const CellReport& c) { return c.steal_wait.count(); }},
+    {"steal_bytes", StatisticUnit::Bytes, StatisticScope::Steal,
+     "balancing bytes over the links: requests, answers and pixels it sent and took in", "steal B", 10,
+     "Steal bytes", [](const CellReport& c) { return c.balance_bytes_sent + c.balance_bytes_received; }},
 }};
 
 inline constexpr std::array<Statistic<LinkTraffic>, 4> kLinkStatistics = {{

@@ -1,5 +1,7 @@
 #include "machine/traced_cells.h"
 
+#include "machine/balance.h"
+
 #include "capsim/host_threads.h"
 #include "capsim/image_io.h"
 #include "capsim/progress.h"
@@ -23,8 +25,40 @@ namespace {
 struct Sums {
   std::vector<OpCounts> ops;
   std::vector<std::uint64_t> items;  // pixels or corner samples written
+  std::vector<std::vector<OpCounts>> chunk_ops;  // stealing: per cell, per chunk
   explicit Sums(int cells) : ops(cells), items(cells, 0) {}
+  // Stealing: per-chunk sums for chunks of chunk_pixels pixels of each window.
+  Sums(const WindowLayout& layout, int chunk_pixels) : Sums(layout.grid().cell_count()) {
+    if (chunk_pixels <= 0) return;
+    chunk_ops.resize(ops.size());
+    for (std::size_t c = 0; c < ops.size(); ++c)
+      chunk_ops[c].resize(chunk_count(layout.window(static_cast<CellId>(c)).pixel_count(), chunk_pixels));
+  }
+  void add(const PixelOwner& owner, const OpCounts& pixel_ops, int chunk_pixels) {
+    ops[owner.cell] += pixel_ops;
+    if (chunk_pixels > 0) chunk_ops[owner.cell][owner.video_index / chunk_pixels] += pixel_ops;
+  }
 };
+
+// Stealing: the per-thread chunk sums added into the cells' chunk_ops and
+// their work. Precondition: fold found every cell's work to fit, so every
+// chunk's does.
+void fold_chunks(const tbb::enumerable_thread_specific<Sums>& sums, const WindowLayout& layout, const CostTable& costs,
+                 int chunk_pixels, std::vector<TracedCell>& cells) {
+  if (chunk_pixels <= 0) return;
+  for (CellId c = 0; c < layout.grid().cell_count(); ++c) {
+    const int pixels = layout.window(c).pixel_count();
+    TracedCell& cell = cells[c];
+    cell.chunk_ops.assign(chunk_count(pixels, chunk_pixels), OpCounts());
+    for (const Sums& sum : sums)
+      for (std::size_t k = 0; k < cell.chunk_ops.size(); ++k) cell.chunk_ops[k] += sum.chunk_ops[c][k];
+    cell.chunk_work.clear();
+    for (std::size_t k = 0; k < cell.chunk_ops.size(); ++k) {
+      const ChunkRange r = chunk_range(static_cast<int>(k), pixels, chunk_pixels);
+      cell.chunk_work.push_back(*wide_work_cost(cell.chunk_ops[k], static_cast<std::uint64_t>(r.pixels), costs).narrow());
+    }
+  }
+}
 
 std::string cell_name(const WindowLayout& layout, CellId c) {
   const CellPosition p = layout.grid().position(c);
@@ -124,7 +158,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
                                                 const CostTable& costs, int threads,
                                                 Progress* progress, const AntialiasOptions& aa,
                                                 ScreenFormat format, bool keep_write_cycles,
-                                                CornerTracing tracing) {
+                                                CornerTracing tracing, int chunk_pixels) {
   const int cell_count = layout.grid().cell_count();
   const int width = layout.width(), height = layout.height();
   const bool floats = format == ScreenFormat::Float;
@@ -169,7 +203,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
       progress);
 
   // Phase 3.
-  tbb::enumerable_thread_specific<Sums> pixel_sums([&] { return Sums(cell_count); });
+  tbb::enumerable_thread_specific<Sums> pixel_sums([&] { return Sums(layout, chunk_pixels); });
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
   parallel_rows(threads, height, [&](const tbb::blocked_range<int>& rows) {
     Tracer::Scratch& s = scratch.local();
@@ -183,7 +217,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
         const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, ops);
         TracedCell& out = cells[own.cell];
         store(out, own.video_index, px.value, format);
-        sum.ops[own.cell] += ops;
+        sum.add(own, ops, chunk_pixels);
         ++sum.items[own.cell];
         if (!floats && !keep_write_cycles) continue;
         const std::uint64_t subdivision = saturated_cycles(ops, costs);
@@ -201,6 +235,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
   });
   if (const auto overflow = fold(corner_sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, const OpCounts& ops) {
         cells[c].corner_work = work;
+        cells[c].corner_ops = ops;
         cells[c].rays += ops.rays;
         cells[c].ops += ops;
       }))
@@ -213,6 +248,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
       }))
     throw CycleOverflow(fmt::format("{}'s subdivision of its {} pixels adds up to {} cycles",
                                     cell_name(layout, overflow->cell), overflow->items, overflow->total));
+  fold_chunks(pixel_sums, layout, costs, chunk_pixels, cells);
   for (TracedCell& c : cells) {
     c.work = c.corner_work;
     try {
@@ -230,10 +266,10 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CostTable& costs, int threads, Progress* progress,
                                     const AntialiasOptions& aa, ScreenFormat format, bool keep_write_cycles,
-                                    CornerTracing corners) {
+                                    CornerTracing corners, int chunk_pixels) {
   if (aa.depth > 0)
     return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format, keep_write_cycles,
-                                   corners);
+                                   corners, chunk_pixels);
   const int cell_count = layout.grid().cell_count();
   const bool floats = format == ScreenFormat::Float;
   std::vector<TracedCell> cells = empty_cells(layout, format, false, keep_write_cycles);
@@ -241,7 +277,7 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
   // Pixels are traced in screen order, row by row as `capsim render` traces
   // them (neighbouring rays share voxels and primitives in the caches), and each
   // sample goes to the video-memory slot of the cell whose window shows it.
-  tbb::enumerable_thread_specific<Sums> sums([&] { return Sums(cell_count); });
+  tbb::enumerable_thread_specific<Sums> sums([&] { return Sums(layout, chunk_pixels); });
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
   parallel_rows(threads, layout.height(), [&](const tbb::blocked_range<int>& rows) {
     Tracer::Scratch& s = scratch.local();
@@ -251,7 +287,7 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
         const PixelOwner owner = owners.owner(x, y);
         TracedCell& out = cells[owner.cell];
         ++sum.items[owner.cell];
-        if (!floats && !keep_write_cycles) {
+        if (!floats && !keep_write_cycles && chunk_pixels <= 0) {
           // trace_pixel adds its operations to the cell's sum directly.
           store(out, owner.video_index, tracer.trace_pixel(x, y, s, sum.ops[owner.cell]), format);
           continue;
@@ -261,7 +297,7 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
         const std::uint64_t cycles = saturated_cycles(ops, costs);
         if (floats) out.pixel_cycles[owner.video_index] = cycles;
         if (keep_write_cycles) out.write_cycles[owner.video_index] = cycles;
-        sum.ops[owner.cell] += ops;
+        sum.add(owner, ops, chunk_pixels);
       }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
   });
@@ -271,6 +307,7 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
         cells[c].ops = ops;
       }))
     refuse_overflow(tracer, layout, costs, *overflow, "pixels");
+  fold_chunks(sums, layout, costs, chunk_pixels, cells);
   return cells;
 }
 

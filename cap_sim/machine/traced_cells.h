@@ -37,6 +37,7 @@ struct TracedCell {
   OpCounts ops;  // the operations work charges for (rays = ops.rays)
   // Antialiasing only.
   CostBreakdown corner_work;               // phase 1: tracing its corners (CornerTracing)
+  OpCounts corner_ops;                     // and its operations
   CostBreakdown subdivision_work;          // phase 3: its pixels' subdivision
   std::vector<std::uint32_t> pixel_samples;  // primary samples traced per pixel (Float)
   // Kept only when asked (trace_cells' keep_write_cycles), in either format: per
@@ -44,6 +45,13 @@ struct TracedCell {
   // (antialiased, its subdivision in phase 3). They add up to work.total()
   // (antialiased, to subdivision_work.total()).
   std::vector<std::uint64_t> write_cycles;
+  // Kept only when asked (trace_cells' chunk_pixels), stealing: per chunk of
+  // the window (balance.h), the work a chunk takes wherever it is traced (its
+  // tracing; antialiased, its subdivision in phase 3) and its operations.
+  // They add up to work and ops (antialiased, to subdivision_work and phase
+  // 3's share of ops).
+  std::vector<CostBreakdown> chunk_work;
+  std::vector<OpCounts> chunk_ops;
 };
 
 // Antialiased, who traces a corner sample (phase 1): the window that owns it
@@ -54,11 +62,12 @@ enum class CornerTracing { ByOwner, ByEveryWindowThatNeedsIt };
 
 // One entry per cell of the layout. threads: 0 = all hardware threads.
 // progress may be null; it advances by render_work(width, height, aa).
-// keep_write_cycles: fill TracedCell::write_cycles.
+// keep_write_cycles: fill TracedCell::write_cycles. chunk_pixels > 0: fill
+// TracedCell::chunk_work and chunk_ops for chunks of that many pixels.
 std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
                                     const CostTable& costs, int threads, Progress* progress,
                                     const AntialiasOptions& aa = {},
                                     ScreenFormat format = ScreenFormat::Float, bool keep_write_cycles = false,
-                                    CornerTracing corners = CornerTracing::ByOwner);
+                                    CornerTracing corners = CornerTracing::ByOwner, int chunk_pixels = 0);
 
 }  // namespace capsim::sim

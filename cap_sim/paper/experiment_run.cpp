@@ -70,11 +70,13 @@ RunFigures run_experiment(const RunSpec& spec, int threads) {
     f.pixels += c.pixels;
     f.cells.push_back({c.ops, c.pixels, c.finish});
     f.tile_wait += c.tile_wait;
+    f.chunks_stolen += c.chunks_stolen;
   }
   f.voxels = r.voxel_counts;
   f.bus = r.bus;
   f.links = link_totals(r);
   f.balance_bus_percent = balance_bus_percent(r);
+  f.steal_link_bytes = r.steal_links.bytes;
   f.grid_divisions = scene.grid.n;
   return f;
 }

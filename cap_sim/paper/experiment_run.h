@@ -55,6 +55,9 @@ struct RunFigures {
   // nothing to trace, summed; 0 statically.
   double balance_bus_percent = 0;
   Cycles tile_wait;
+  // Stealing: the chunks cells took from their neighbours, and the bytes the
+  // links carried for stealing; 0 otherwise.
+  std::uint64_t chunks_stolen = 0, steal_link_bytes = 0;
 
   double seconds(Cycles c) const { return c.seconds(clock_hz); }
   double frame_seconds() const { return seconds(frame); }

@@ -19,7 +19,7 @@ std::string run_name(const std::string& model, const std::string& scheme, const 
 }
 
 std::string run_name(const json& run) {
-  const json& scheme = run.contains("mode") ? run.at("mode") : run.at("balance");
+  const json& scheme = run.contains("balance") ? run.at("balance") : run.at("mode");
   return run_name(run.at("model").get<std::string>(), scheme.get<std::string>(), run.at("cells").get<std::string>(),
                   run.at("aa").get<int>());
 }
@@ -48,11 +48,12 @@ const std::vector<int>& modes_bench_aa_depths() {
 
 const std::vector<std::string>& modes_bench_schemes() {
   static const std::vector<std::string> schemes = {"block", "line", "dot",
-                                                   to_string(BalanceOptions{BalanceScheme::Demand})};
+                                                   to_string(BalanceOptions{BalanceScheme::Demand}),
+                                                   to_string(BalanceOptions{BalanceScheme::Steal})};
   return schemes;
 }
 
-std::string ModeRun::scheme() const { return balance.on_demand() ? to_string(balance) : to_string(mode); }
+std::string ModeRun::scheme() const { return balance.is_static() ? to_string(mode) : to_string(balance); }
 
 ModesBench run_modes_bench(const ModesBenchOptions& options) {
   ModesBench b;
@@ -99,7 +100,7 @@ json modes_bench_json(const ModesBench& b) {
     const RunFigures& f = r.figures;
     json run = {
         {"model", r.model},
-        {r.balance.on_demand() ? "balance" : "mode", r.scheme()},
+        {r.balance.is_static() ? "mode" : "balance", r.scheme()},
         {"cells", to_string(r.cells)},
         {"aa", r.aa_depth},
         {"frame_cycles", f.frame.count()},
@@ -117,6 +118,8 @@ json modes_bench_json(const ModesBench& b) {
     };
     if (r.balance.on_demand())
       run.update({{"balance_bus_percent", f.balance_bus_percent}, {"tile_wait_cycles", f.tile_wait.count()}});
+    if (r.balance.stealing())
+      run.update({{"chunks_stolen", f.chunks_stolen}, {"steal_link_bytes", f.steal_link_bytes}});
     runs.push_back(std::move(run));
   }
   return {{"benchmark", "capsim bench modes"},
@@ -149,13 +152,13 @@ std::string modes_bench_svg(const ModesBench& b) {
   for (const ModeRun& r : b.runs)
     if (std::find(models.begin(), models.end(), r.model) == models.end()) models.push_back(r.model);
   const std::vector<std::string>& schemes = modes_bench_schemes();
-  const char* dashes[4] = {"", "6 4", "2 3", "10 3 2 3"};
+  const char* dashes[5] = {"", "6 4", "2 3", "10 3 2 3", "1 4"};
   std::vector<PlotSeries> d_series, speed_series;
   double d_lo = 100, d_hi = 0.1;
   for (std::size_t m = 0; m < models.size(); ++m)
     for (std::size_t k = 0; k < schemes.size(); ++k) {
       PlotSeries d = plot_series(fmt::format("{} {}", models[m], schemes[k]), series_colour(static_cast<int>(m)),
-                                 dashes[k % 4]);
+                                 dashes[k % 5]);
       PlotSeries sp = d;
       for (const ModeRun& r : b.runs) {
         if (r.model != models[m] || r.scheme() != schemes[k] || r.aa_depth != 0) continue;

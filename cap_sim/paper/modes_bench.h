@@ -1,7 +1,7 @@
 #pragma once
 // Regression benchmarks of the pixel modes (`capsim bench modes`,
 // docs/benchmarks.md): every shipped model in block, line and dot mode, and
-// balanced on demand (docs/balancing.md), on 4x4, 4x8, 8x8 and 16x16 cells,
+// balanced on demand and stealing (docs/balancing.md), on 4x4, 4x8, 8x8 and 16x16 cells,
 // plain and antialiased, with the simulated figures that matter for them. Simulated cycles are deterministic, so a
 // stored baseline is compared exactly: any change is a regression or an
 // intended change to be recorded.
@@ -27,13 +27,13 @@ struct ModesBenchOptions {
 const std::vector<std::string>& modes_bench_models();  // "balls.csg", ..., "disb/f00000.csg"
 const std::vector<CellGrid>& modes_bench_grids();       // 4x4, 4x8, 8x8, 16x16
 const std::vector<int>& modes_bench_aa_depths();        // 0 (plain) and 2
-// How the runs share the screen: the three pixel modes (static, the paper's)
-// and demand at its default tile.
-const std::vector<std::string>& modes_bench_schemes();  // "block", "line", "dot", "demand:64"
+// How the runs share the screen: the three pixel modes (static, the paper's),
+// demand at its default tile and stealing at its default chunk from dot mode.
+const std::vector<std::string>& modes_bench_schemes();  // "block", "line", "dot", "demand:64", "steal:16"
 
 struct ModeRun {
   std::string model;  // the file's name without .csg ("balls", "disb/f00000")
-  PixelMode mode = PixelMode::Dot;  // static runs' (demand runs keep the default)
+  PixelMode mode = PixelMode::Dot;  // static runs'; demand runs keep the default, steal runs start from dot
   BalanceOptions balance;
   CellGrid cells;
   int aa_depth = 0;
@@ -52,7 +52,8 @@ struct ModesBench {
 ModesBench run_modes_bench(const ModesBenchOptions& options);
 
 // The results as JSON (the baseline format, docs/benchmarks.md: a static
-// run has a "mode", a demand run a "balance" and its balancing figures), as a
+// run has a "mode", a demand or steal run a "balance" and its balancing
+// figures), as a
 // table for people, and as an SVG plot (d and speed-up against the cell count).
 nlohmann::json modes_bench_json(const ModesBench& b);
 std::string modes_bench_table(const ModesBench& b);

@@ -105,7 +105,9 @@ std::string reading_section(const ModesBench& b) {
       "cells: in block mode each cell traces one rectangle, in line mode every so many rows, in dot mode one pixel "
       "of every square the size of the cell grid. Balanced on demand (<code>demand:64</code>, LINKS-1's scheme), "
       "the host hands out tiles of 8 x 8 pixels over the command bus to the cells that ask, so a cell that "
-      "finishes early takes more. Each cell sends its &ldquo;done&rdquo; to the host over the "
+      "finishes early takes more. Stealing (<code>steal:16</code>) starts from dot mode's windows cut into "
+      "chunks of 16 pixels; a cell that has traced its own takes half of a neighbour's unstarted chunks over the "
+      "links and sends the pixels back. Each cell sends its &ldquo;done&rdquo; to the host over the "
       "command bus. An antialiased run adds the exchange of corner samples over the neighbour links.</p>\n"
       "<p><strong>d = (Max &minus; Min) / Max</strong> is the paper's measure of how evenly a mode spreads the "
       "work (Table 4-4): Max is the cycle the slowest cell's &ldquo;done&rdquo; reached the host, which is the "
@@ -220,7 +222,7 @@ std::string plots_section(const ModesBench& b) {
   return fmt::format(
       "<section id=\"plots\" class=\"plots\">\n<h2>Plots</h2>\n"
       "<figure class=\"overview-plot\">\n{}<figcaption>Every model's plain frames at once: a colour per model, "
-      "solid for block, dashed for line, dotted for dot mode, dash-dotted for demand (the same plot as --plot).</figcaption>\n</figure>\n"
+      "solid for block, dashed for line, dotted for dot mode, dash-dotted for demand, finely dotted for steal (the same plot as --plot).</figcaption>\n</figure>\n"
       "<h3>Model by model</h3>\n<p>The same axes for every model, so that they compare at a glance. A d of 0 is "
       "drawn at 0.01 %.</p>\n{}</section>\n",
       inline_svg(modes_bench_svg(b)), figures);
@@ -269,7 +271,8 @@ std::string runs_section(const ModesBench& b) {
       "antialiasing, then scheme, then cells). Rest the pointer on a row for the <code>capsim simulate</code> "
       "command that repeats it, on a time for its cycles. With JavaScript, a click on a heading sorts by that "
       "column and a second click reverses it. Bus bytes are everything on the command bus: the broadcasts, "
-      "every cell's &ldquo;done&rdquo; and, on demand, the requests and grants of tiles; the links carry the corner exchange of antialiased runs only.</p>\n"
+      "every cell's &ldquo;done&rdquo; and, on demand, the requests and grants of tiles; the links carry the "
+      "corner exchange of antialiased static and steal runs, and the requests, work and pixels of steal runs.</p>\n"
       "<div class=\"table-box\"><table id=\"runs-table\" class=\"numbers\">\n<caption>{} runs; seconds "
       "simulated</caption>\n<thead><tr>{}</tr></thead>\n<tbody>\n{}</tbody>\n</table></div>\n</section>\n",
       b.runs.size(), head, body);

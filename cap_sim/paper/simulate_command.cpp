@@ -36,7 +36,7 @@ std::string simulate_command(const SimulateSettings& s, CommandForm form) {
     if (every || s.aa.threshold != defaults.aa.threshold) cmd += fmt::format(" --aa-threshold {}", s.aa.threshold);
   }
   if (s.frame_average) cmd += " --frame-average";
-  if (s.balance.on_demand()) cmd += " --balance " + to_string(s.balance);
+  if (!s.balance.is_static()) cmd += " --balance " + to_string(s.balance);
   if (every || s.threads != defaults.threads) cmd += fmt::format(" --threads {}", s.threads);
   for (const std::string& d : s.defines) cmd += " -D " + single_quoted(d);
   return cmd;

@@ -21,7 +21,7 @@ const std::vector<std::string> kFigureKeys = {
     "frame_seconds",    "max_cycles",  "min_cycles",  "max_seconds",      "min_seconds",
     "deviation_percent", "busy_deviation_percent",    "speedup",          "bus_transfers",
     "bus_bytes",        "bus_cycles",  "bus_seconds", "link_messages",    "link_bytes",
-    "balance_bus_percent", "tile_wait_cycles", "capsim_version"};
+    "balance_bus_percent", "tile_wait_cycles", "chunks_stolen", "steal_link_bytes", "capsim_version"};
 
 json inputs_of(const json& record) {
   json inputs = json::object();
@@ -51,7 +51,11 @@ json sweep_record(const SweepPoint& p, const SimulationResult& r, const std::str
   const LoadSpread busy = busy_spread(r);
   const LinkTotals links = link_totals(r);
   Cycles tile_wait;
-  for (const CellReport& c : r.cells) tile_wait += c.tile_wait;
+  std::uint64_t stolen = 0;
+  for (const CellReport& c : r.cells) {
+    tile_wait += c.tile_wait;
+    stolen += c.chunks_stolen;
+  }
   json record = sweep_inputs(p);
   record.update({{"frames", r.screens.size()},
                  {"width", r.width},
@@ -73,6 +77,8 @@ json sweep_record(const SweepPoint& p, const SimulationResult& r, const std::str
                  {"link_bytes", links.bytes},
                  {"balance_bus_percent", balance_bus_percent(r)},
                  {"tile_wait_cycles", tile_wait.count()},
+                 {"chunks_stolen", stolen},
+                 {"steal_link_bytes", r.steal_links.bytes},
                  {"capsim_version", version}});
   return record;
 }

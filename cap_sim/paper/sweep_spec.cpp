@@ -135,7 +135,7 @@ void apply(const Context& c, const std::string& axis, const json& v, const std::
   } else if (axis == "primary_only") {
     p.primary_only = boolean(c, v, where);
   } else if (axis == "balance") {
-    const std::string scheme = text(c, v, where, "static, demand or demand:TILE");
+    const std::string scheme = text(c, v, where, "static, demand, demand:TILE, steal or steal:CHUNK");
     try {
       p.balance = parse_balance(scheme);
     } catch (const std::invalid_argument& e) {
@@ -152,7 +152,7 @@ std::string LeftOutPoints::summary() const {
   if (total() == 0) return "";
   std::string reasons;
   for (const auto& [n, why] : {std::pair{frame_average_outside_dot, "frame_average outside dot mode"},
-                               std::pair{frame_average_on_demand, "frame_average on demand"},
+                               std::pair{frame_average_balanced, "frame_average with demand or steal"},
                                std::pair{demand_per_mode, "demand points repeated per mode"}})
     if (n > 0) reasons += fmt::format("{}{} {}", reasons.empty() ? "" : ", ", n, why);
   return fmt::format("{} left out: {}", total(), reasons);
@@ -198,11 +198,11 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& file) {
   if (axes.contains("modes")) first_mode = *parse_pixel_mode(axes["modes"][0].get<std::string>());
   SweepSpec spec;
   for (SweepPoint& p : points) {
-    // The dot pattern turns only in dot mode, and demand hands out one frame's
-    // tiles at a time: simulate refuses both combinations, which a cross
-    // product of the axes yields.
-    if (p.balance.on_demand() && p.frame_average) {
-      ++spec.left_out.frame_average_on_demand;
+    // The dot pattern turns only in dot mode, and demand and steal share one
+    // frame's work at a time: simulate refuses these combinations, which a
+    // cross product of the axes yields.
+    if (!p.balance.is_static() && p.frame_average) {
+      ++spec.left_out.frame_average_balanced;
     } else if (p.balance.on_demand() && p.mode != first_mode) {
       ++spec.left_out.demand_per_mode;
     } else if (p.frame_average && p.mode != PixelMode::Dot) {

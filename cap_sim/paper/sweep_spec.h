@@ -47,9 +47,9 @@ struct SweepPoint {
 // Points of the cross product that are left out, by why.
 struct LeftOutPoints {
   int frame_average_outside_dot = 0;  // the dot pattern turns only in dot mode
-  int frame_average_on_demand = 0;    // demand hands out one frame's tiles at a time
+  int frame_average_balanced = 0;     // demand and steal share one frame's work at a time
   int demand_per_mode = 0;            // demand takes no mode: one point stands for every mode
-  int total() const { return frame_average_outside_dot + frame_average_on_demand + demand_per_mode; }
+  int total() const { return frame_average_outside_dot + frame_average_balanced + demand_per_mode; }
   // "3 left out: 1 frame_average outside dot mode, 2 demand points repeated
   // per mode"; empty when none is.
   std::string summary() const;
@@ -64,7 +64,7 @@ struct SweepSpec {
 // profiles, grid, primary_only, aa, frame_average, balance, modes, cells, the
 // last fastest (the cell counts a speed-up compares are neighbours); a missing
 // axis takes simulate's default. Points simulate would refuse (frame_average
-// outside dot mode or on demand) are left out, and so are the repeats of a
+// outside dot mode, on demand or stealing) are left out, and so are the repeats of a
 // demand point over the modes axis: it is kept at the axis's first mode and
 // recorded with the mode "tiles". Throws SweepSpecError naming `file` and the
 // value at fault.

@@ -205,7 +205,7 @@ std::string cell_table(const SimulationResult& r) {
   const bool aa = r.config.aa.depth > 0;
   // Every cell statistic the run kept, cycles shown in seconds.
   auto kept = [&](const Statistic<CellReport>& s) {
-    return statistic_kept(s.scope, aa, r.config.balance.on_demand());
+    return statistic_kept(s.scope, aa, r.config.balance.scheme);
   };
   std::string head = "<th data-key=\"cell\">Cell</th><th data-key=\"row\">Row</th><th data-key=\"col\">Col</th>";
   for (const auto& s : kCellStatistics)
@@ -331,6 +331,33 @@ std::string balancing_section(const SimulationResult& r) {
       grouped(r.balance_bus.busy.count()), r.balance_bus.busy.seconds(hz), balance_bus_percent(r));
 }
 
+// Stealing: what the cells took from each other over the links, and the map
+// of which cell traced each pixel (drawn by the script from the page's
+// completion data, whose chunks name their tracers).
+std::string stealing_section(const SimulationResult& r) {
+  std::uint64_t requests = 0, refused = 0, stolen = 0, chunks = 0;
+  for (const CellReport& c : r.cells) {
+    requests += c.steal_requests;
+    refused += c.steals_refused;
+    stolen += c.chunks_stolen;
+  }
+  for (const auto& frame : r.chunk_cells)
+    for (const auto& window : frame) chunks += window.size();
+  return fmt::format(
+      "<section id=\"stealing\">\n<h2>Stealing</h2>\n<p>Each cell traces the chunks of {0} pixels its window "
+      "shows ({1} mode), front to back; a cell that has traced its own asks its neighbours over the links for "
+      "half of their unstarted chunks and sends back the pixels it traces of them (docs/balancing.md). The "
+      "table of cells gives each cell's chunks, requests and waits.</p>\n<table id=\"steal-totals\" "
+      "class=\"facts\">\n<caption>Stealing traffic</caption>\n"
+      "<tr><th>Chunks</th><td>{2}, {3} of them stolen</td></tr>\n"
+      "<tr><th>Requests</th><td>{4}, {5} answered &ldquo;no work&rdquo;</td></tr>\n"
+      "<tr><th>Link messages for stealing</th><td>{6} ({7} B)</td></tr>\n</table>\n<p class=\"note\">Which "
+      "cell traced each pixel, one colour a cell; hover for the pixel and its cell.</p>\n"
+      "<div id=\"chunk-map\" class=\"tile-map\"></div>\n</section>\n",
+      r.config.balance.chunk_pixels, to_string(r.config.mode), grouped(chunks), grouped(stolen), grouped(requests),
+      grouped(refused), grouped(r.steal_links.messages), grouped(r.steal_links.bytes));
+}
+
 std::string sequence_section(const SimulationResult& r) {
   const std::uint64_t hz = r.config.profile.clock_hz;
   std::string frames;
@@ -381,7 +408,9 @@ std::string page_data(const SimulationResult& r) {
       const CellWindow& w = layout.window(c);
       windows.push_back({w.origin_x(), w.origin_y(), w.columns(), w.rows(), w.stride_x(), w.stride_y()});
     }
-    const std::vector<unsigned char> packed = pack_completion_cycles(r.screens[f].completion_cycles, layout);
+    const bool stealing = r.config.balance.stealing();
+    const std::vector<unsigned char> packed =
+        pack_completion_cycles(r.screens[f].completion_cycles, layout, stealing);
     const std::size_t unit = static_cast<std::size_t>(
         std::find_if(r.units.begin(), r.units.end(),
                      [&](const UnitTimes& u) {
@@ -392,6 +421,11 @@ std::string page_data(const SimulationResult& r) {
                       {"start_cycles", r.units.at(unit).start.count()},
                       {"completion", base64(packed)}});
     if (r.config.balance.on_demand()) frames.back()["window_cells"] = r.tile_cells.at(f);
+    if (stealing) {
+      frames.back()["signed"] = true;
+      frames.back()["chunk_pixels"] = r.config.balance.chunk_pixels;
+      frames.back()["chunk_cells"] = r.chunk_cells.at(f);
+    }
   }
   return nlohmann::json{{"frames", frames}}.dump();
 }
@@ -419,6 +453,7 @@ std::string html_report(const SimulationResult& r, const RunFacts& facts) {
                      cells_section(r) + timeline_section() + breakdown_section(r);
   if (r.config.aa.depth > 0) body += antialiasing_section(r);
   if (r.config.balance.on_demand()) body += balancing_section(r);
+  if (r.config.balance.stealing()) body += stealing_section(r);
   if (r.screens.size() > 1) body += sequence_section(r);
   body += fmt::format(
       "</main>\n<footer>Written by capsim {}. The --report JSON and the --trace JSON of this run are in this file, "
@@ -429,7 +464,9 @@ std::string html_report(const SimulationResult& r, const RunFacts& facts) {
   body += data_block("page-data", page_data(r));
 
   const std::string sharing = r.config.balance.on_demand() ? "balanced " + to_string(r.config.balance)
-                                                           : fmt::format("{} mode", to_string(r.config.mode));
+                              : r.config.balance.stealing()
+                                  ? fmt::format("{} mode, {}", to_string(r.config.mode), to_string(r.config.balance))
+                                  : fmt::format("{} mode", to_string(r.config.mode));
   const std::string title = fmt::format("capsim: {}, {} cells, {}", run_name(facts.scenes, r.screens.size()),
                                         to_string(r.config.cells), sharing);
   const HtmlAssets& assets = html_assets();

@@ -102,7 +102,7 @@ std::string base64(std::span<const unsigned char> bytes) {
 std::string png_data_uri(std::span<const unsigned char> png) { return "data:image/png;base64," + base64(png); }
 
 std::vector<unsigned char> pack_completion_cycles(const std::vector<std::uint64_t>& completion,
-                                                  const WindowLayout& layout) {
+                                                  const WindowLayout& layout, bool signed_differences) {
   if (completion.size() != static_cast<std::size_t>(layout.width()) * layout.height())
     throw std::invalid_argument(fmt::format("{} completion cycles for a {}x{} screen", completion.size(),
                                             layout.width(), layout.height()));
@@ -114,9 +114,11 @@ std::vector<unsigned char> pack_completion_cycles(const std::vector<std::uint64_
     for (int k = 0; k < w.pixel_count(); ++k) {
       const ScreenPixel p = w.screen_pixel(k);
       const std::uint64_t t = completion[static_cast<std::size_t>(p.y) * layout.width() + p.x];
-      if (t < previous)
+      if (t < previous && !signed_differences)
         throw std::invalid_argument(fmt::format("cell {} pixel {} completes before the one before it", c, k));
-      for (std::uint64_t d = t - previous;; d >>= 7) {
+      const std::uint64_t difference =
+          !signed_differences ? t - previous : t >= previous ? 2 * (t - previous) : 2 * (previous - t) - 1;
+      for (std::uint64_t d = difference;; d >>= 7) {
         if (d < 128) {
           out.push_back(static_cast<unsigned char>(d));
           break;

@@ -46,9 +46,12 @@ std::string png_data_uri(std::span<const unsigned char> png);
 // its window in video-memory order, the cycles since its previous pixel
 // completed (for k = 0, since cycle 0) as an unsigned LEB128 number: 7 bits a
 // byte, low bits first, the high bit set on every byte but the last. A cell's
-// pixels complete in order, so no difference is negative.
-// Throws std::invalid_argument if one is, or if the sizes do not match.
+// pixels complete in order, so no difference is negative; stealing, chunks
+// traced by a neighbour come back out of order, and `signed_differences`
+// writes each difference zig-zag coded first (d >= 0 as 2d, d < 0 as
+// -2d - 1). Throws std::invalid_argument if a difference is negative without
+// it, or if the sizes do not match.
 std::vector<unsigned char> pack_completion_cycles(const std::vector<std::uint64_t>& completion,
-                                                  const WindowLayout& layout);
+                                                  const WindowLayout& layout, bool signed_differences = false);
 
 }  // namespace capsim::sim

@@ -101,9 +101,12 @@ std::string cell_table(const SimulationResult& r, StatisticScope scope, bool sec
 }
 
 std::string header_line(const SimulationResult& r) {
-  const std::string sharing = r.config.balance.on_demand()
-                                  ? fmt::format("balanced on demand in tiles of {} pixels", r.config.balance.tile_pixels)
-                                  : fmt::format("{} mode", to_string(r.config.mode));
+  const std::string sharing =
+      r.config.balance.on_demand()
+          ? fmt::format("balanced on demand in tiles of {} pixels", r.config.balance.tile_pixels)
+      : r.config.balance.stealing()
+          ? fmt::format("{} mode, stealing chunks of {} pixels", to_string(r.config.mode), r.config.balance.chunk_pixels)
+          : fmt::format("{} mode", to_string(r.config.mode));
   return fmt::format("CAP simulation: {} cells, {}, profile {} ({} Hz), {}x{} pixels\n", to_string(r.config.cells),
                      sharing, r.config.profile.name, r.config.profile.clock_hz, r.width, r.height);
 }
@@ -121,6 +124,32 @@ std::string format_balancing(const SimulationResult& r) {
       "bus for balancing: {} transfers, {} B, busy {} cycles ({:.3f} s), {:.3f} % of the run's time\n",
       h.requests, h.bytes_received, h.grants, h.refusals, h.bytes_sent, r.balance_bus.transfers,
       r.balance_bus.bytes, r.balance_bus.busy.count(), r.balance_bus.busy.seconds(hz), balance_bus_percent(r));
+  return out;
+}
+
+// Stealing: what was stolen and the links' stealing traffic.
+struct StealTotals {
+  std::uint64_t chunks = 0, stolen = 0, requests = 0, refused = 0;
+};
+StealTotals steal_totals(const SimulationResult& r) {
+  StealTotals t;
+  for (const CellReport& c : r.cells) {
+    t.stolen += c.chunks_stolen;
+    t.requests += c.steal_requests;
+    t.refused += c.steals_refused;
+  }
+  for (const auto& frame : r.chunk_cells)
+    for (const auto& window : frame) t.chunks += window.size();
+  return t;
+}
+
+std::string format_stealing(const SimulationResult& r) {
+  const StealTotals t = steal_totals(r);
+  std::string out = fmt::format("\nstealing: {} chunks of at most {} pixels, {} of them stolen\n", t.chunks,
+                                r.config.balance.chunk_pixels, t.stolen);
+  out += cell_table(r, StatisticScope::Steal, false);
+  out += fmt::format("requests: {}, {} answered \"no work\"; links for stealing: {} messages, {} B\n", t.requests,
+                     t.refused, r.steal_links.messages, r.steal_links.bytes);
   return out;
 }
 
@@ -187,6 +216,7 @@ std::string format_report(const SimulationResult& r, const Provenance* provenanc
   out += fmt::format("  {:<22} {:>14.3f} s\n", "total", total);
   if (r.config.aa.depth > 0) out += format_antialiasing(r);
   if (r.config.balance.on_demand()) out += format_balancing(r);
+  if (r.config.balance.stealing()) out += format_stealing(r);
   if (r.screens.size() > 1) out += format_sequence(r);
   if (provenance) out += provenance_text(*provenance);
   return out;
@@ -218,6 +248,21 @@ void add_antialiasing(nlohmann::json& report, const SimulationResult& r) {
                            {"max_hops", t.max_hops},
                            {"busiest_link_cycles", t.busiest.count()},
                            {"longest_wait_cycles", t.longest_wait.count()}};
+}
+
+void add_stealing(nlohmann::json& report, const SimulationResult& r) {
+  for (std::size_t i = 0; i < r.cells.size(); ++i)
+    for (const auto& s : kCellStatistics)
+      if (s.scope == StatisticScope::Steal) report["cells"][i][s.json_key()] = s.value(r.cells[i]);
+  const StealTotals t = steal_totals(r);
+  report["balancing"] = {{"scheme", "steal"},
+                         {"chunk_pixels", r.config.balance.chunk_pixels},
+                         {"chunks", t.chunks},
+                         {"chunks_stolen", t.stolen},
+                         {"requests", t.requests},
+                         {"refused", t.refused},
+                         {"chunk_cells", r.chunk_cells},
+                         {"links", {{"messages", r.steal_links.messages}, {"bytes", r.steal_links.bytes}}}};
 }
 
 void add_balancing(nlohmann::json& report, const SimulationResult& r) {
@@ -339,6 +384,7 @@ nlohmann::json report_json(const SimulationResult& r, const Provenance* provenan
           {"total_cycles", r.frame.count()}};
   if (r.config.aa.depth > 0) add_antialiasing(report, r);
   if (r.config.balance.on_demand()) add_balancing(report, r);
+  if (r.config.balance.stealing()) add_stealing(report, r);
   if (r.screens.size() > 1) add_sequence(report, r);
   if (provenance) report["provenance"] = provenance_json(*provenance);
   return report;

@@ -115,7 +115,7 @@ sim::Provenance run_provenance(const std::vector<std::string>& argv, const Trace
                {"quiet", o.quiet}};
   // Only a run that is not static records it, so that a static run's reports
   // stay as they were before balancing could be chosen.
-  if (config.balance.on_demand()) p.options["balance"] = sim::to_string(config.balance);
+  if (!config.balance.is_static()) p.options["balance"] = sim::to_string(config.balance);
   return p;
 }
 
@@ -164,6 +164,10 @@ sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
                                    "frame averaged (--frame-average)",
                                    o.balance.text));
   }
+  if (config.balance.stealing() && o.frame_average)
+    throw UsageError(fmt::format("--balance {} takes chunks of one frame at a time: it cannot be frame averaged "
+                                 "(--frame-average)",
+                                 o.balance.text));
   if (o.frame_average && config.mode != sim::PixelMode::Dot)
     throw UsageError(fmt::format("--frame-average turns the dot pattern from frame to frame: it needs --mode dot, "
                                  "not {}",
@@ -201,9 +205,10 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
                  .description("cap, m380 or a profile JSON file as docs/simulation.md describes"))
       ->default_val("cap");
   add_option(*cmd, "--balance", sim->balance,
-             "Load balancing: static (each cell traces what its window shows, the paper's) or demand[:TILE] (the "
+             "Load balancing: static (each cell traces what its window shows, the paper's), demand[:TILE] (the "
              "host hands out square tiles of TILE pixels, 64 by default, to the cells that ask over the command "
-             "bus; docs/balancing.md)",
+             "bus) or steal[:CHUNK] (the windows of --mode cut into chunks of CHUNK pixels, 16 by default, which "
+             "idle cells take from their neighbours over the links); docs/balancing.md",
              satisfying(
                  [](const std::string& text) {
                    try {
@@ -214,9 +219,9 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
                    }
                  },
                  "is not a balance scheme")
-                 .description(fmt::format("static, demand or demand:TILE, TILE a square number of pixels from 1 to "
-                                          "{} (e.g. demand:64)",
-                                          sim::kMaxTilePixels)))
+                 .description(fmt::format("static, demand, demand:TILE (TILE a square number of pixels from 1 to "
+                                          "{}, e.g. demand:64), steal or steal:CHUNK (CHUNK from 1 to {})",
+                                          sim::kMaxTilePixels, sim::kMaxChunkPixels)))
       ->default_val("static");
   accepts(cmd->add_option("--report", sim->report, "Write the report as JSON to this file"),
           CLI::Validator("a file path"));

@@ -1,6 +1,6 @@
 // `capsim simulate --balance`: static is the run as before; demand[:TILE]
-// gives render's screen, reports the balancing, records the scheme, and
-// refuses what it does not model before writing anything.
+// and steal[:CHUNK] give render's screen, report the balancing, record the
+// scheme, and refuse what they do not model before writing anything.
 
 #include "support/cli_run.h"
 
@@ -71,6 +71,44 @@ TEST(CliBalance, StaticReportsHaveNoBalancing) {
   }
 }
 
+TEST(CliBalance, StealScreenIsRendersInEveryModeAndTheReportsSayWhatWasStolen) {
+  TempDir dir;
+  for (const std::string aa : {"0", "2"}) {
+    ASSERT_EQ(run_capsim("render " + kBalls + " -o " + (dir / "r.png") + " --size 40x30 --aa " + aa, dir).status, 0);
+    for (const std::string mode : {"block", "line", "dot"})
+      for (const std::string threads : {"1", "2"}) {
+        const std::string what = "aa " + aa + " " + mode + " threads " + threads;
+        const RunResult r = run_capsim("simulate " + kBalls + " -o " + (dir / "s.png") +
+                                           " --size 40x30 --cells 3x2 --balance steal:5 --aa " + aa + " --mode " + mode +
+                                           " --threads " + threads + " --report " + (dir / "r.json"),
+                                       dir);
+        ASSERT_EQ(r.status, 0) << r.err;
+        EXPECT_EQ(read_file(dir / "s.png"), read_file(dir / "r.png")) << what;
+        EXPECT_NE(r.out.find("3x2 cells, " + mode + " mode, stealing chunks of 5 pixels"), std::string::npos)
+            << r.out;
+        EXPECT_NE(r.out.find("stealing: "), std::string::npos) << r.out;
+        EXPECT_NE(r.out.find("  chunks   stolen    given   asked  refused"), std::string::npos) << r.out;
+        const nlohmann::json report = nlohmann::json::parse(read_file(dir / "r.json"));
+        EXPECT_EQ(report["provenance"]["options"]["balance"], "steal:5");
+        EXPECT_EQ(report["mode"], mode);
+        const nlohmann::json& b = report["balancing"];
+        EXPECT_EQ(b["scheme"], "steal");
+        EXPECT_EQ(b["chunk_pixels"], 5);
+        std::uint64_t chunks = 0, stolen = 0, given = 0, bytes = 0;
+        for (const auto& window : b["chunk_cells"][0]) chunks += window.size();
+        for (const auto& c : report["cells"]) {
+          stolen += c["chunks_stolen"].get<std::uint64_t>();
+          given += c["chunks_given"].get<std::uint64_t>();
+          bytes += c["steal_bytes"].get<std::uint64_t>();
+        }
+        EXPECT_EQ(b["chunks"], chunks) << what;
+        EXPECT_EQ(b["chunks_stolen"], stolen) << what;
+        EXPECT_EQ(stolen, given) << what;
+        EXPECT_EQ(bytes, 2 * b["links"]["bytes"].get<std::uint64_t>()) << what << ": every byte sent and taken in";
+      }
+  }
+}
+
 TEST(CliBalance, RefusesWhatDemandDoesNotModelBeforeWritingAnything) {
   TempDir dir;
   const std::string base = "simulate " + kBalls + " -o " + (dir / "s.png") + " --size 16x12 --report " +
@@ -78,7 +116,9 @@ TEST(CliBalance, RefusesWhatDemandDoesNotModelBeforeWritingAnything) {
   const std::pair<std::string, std::string> cases[] = {
       {"--balance demand:16 --frame-average", "--balance demand:16 hands out the tiles of one frame at a time"},
       {"--balance demand --mode line", "--balance demand hands out tiles, which the window controllers show"},
-      {"--balance demand:15", "--balance demand:15 is not a balance scheme (accepted: static, demand or demand:TILE"},
+      {"--balance demand:15", "--balance demand:15 is not a balance scheme (accepted: static, demand, demand:TILE"},
+      {"--balance steal:0", "--balance steal:0 is not a balance scheme"},
+      {"--balance steal --frame-average", "--balance steal takes chunks of one frame at a time"},
       {"--balance dynamic", "--balance dynamic is not a balance scheme"},
   };
   for (const auto& [args, message] : cases) {

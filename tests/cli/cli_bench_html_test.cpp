@@ -35,15 +35,15 @@ TEST(CliBenchModesHtml, WritesThePageSayingTheBaselineMatchedTheSameOnOneAndTwoT
                                   (dir / "one.html"),
                               dir);
   ASSERT_EQ(one.status, 0) << one.out << one.err;
-  EXPECT_NE(one.out.find("all 160 runs identical to the baseline"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("all 200 runs identical to the baseline"), std::string::npos) << one.out;
   const std::string page = read_file(dir / "one.html");
   EXPECT_TRUE(page.starts_with("<!DOCTYPE html>\n"));
   EXPECT_TRUE(page.ends_with("</html>\n"));
   EXPECT_NE(page.find("<strong id=\"screen-size\">48x48</strong> pixels, profile <strong>cap</strong>"),
             std::string::npos);
-  EXPECT_NE(page.find("<strong id=\"run-count\">160 runs</strong>"), std::string::npos);
+  EXPECT_NE(page.find("<strong id=\"run-count\">200 runs</strong>"), std::string::npos);
   EXPECT_NE(page.find("class=\"baseline matched\">Matched the baseline <code>" + kBaseline +
-                      "</code>: all 160 runs identical"),
+                      "</code>: all 200 runs identical"),
             std::string::npos);
   EXPECT_EQ(count(page, "<svg "), 6u);  // the overview and one per model
   // Every run of the baseline is a row, with its exact frame cycles.

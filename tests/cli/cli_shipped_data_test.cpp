@@ -35,7 +35,7 @@ TEST(ShippedData, BenchModesFindsTheModelsAndTheBaselineFromAnyDirectory) {
   const RunResult r = run_in(dir, "bench modes --size 48x48");
   ASSERT_EQ(r.status, 0) << r.out << r.err;
   EXPECT_TRUE(r.out.ends_with((kSource / "bench/baselines/modes-48x48.json").string() +
-                              ": all 160 runs identical to the baseline\n"))
+                              ": all 200 runs identical to the baseline\n"))
       << r.out;
   EXPECT_TRUE(files_under(dir.path()).empty());
 }
@@ -61,13 +61,13 @@ TEST(ShippedData, UpdateWritesOnlyTheBaselineItIsGiven) {
 
   const RunResult written = run_in(dir, "bench modes --size 16x16 --update --baseline mine.json");
   ASSERT_EQ(written.status, 0) << written.out << written.err;
-  EXPECT_TRUE(written.out.ends_with("mine.json: written (160 runs)\n")) << written.out;
+  EXPECT_TRUE(written.out.ends_with("mine.json: written (200 runs)\n")) << written.out;
   EXPECT_EQ(files_under(dir.path()), (std::set<std::string>{"mine.json"}));
   EXPECT_FALSE(fs::exists(kSource / "bench/baselines/modes-16x16.json"));
 
   const RunResult compared = run_in(dir, "bench modes --size 16x16 --baseline mine.json");
   EXPECT_EQ(compared.status, 0) << compared.err;
-  EXPECT_TRUE(compared.out.ends_with("mine.json: all 160 runs identical to the baseline\n")) << compared.out;
+  EXPECT_TRUE(compared.out.ends_with("mine.json: all 200 runs identical to the baseline\n")) << compared.out;
 }
 
 TEST(ShippedData, ReproWritesItsReportAndPlotsInTheCurrentDirectory) {

@@ -46,7 +46,8 @@ TEST(CliSweep, WritesACsvAndJsonRecordPerPointInOrder) {
             "scene,cells,mode,balance,aa,profile,size,grid,primary_only,frame_average,frames,width,height,"
             "clock_hz,frame_cycles,frame_seconds,max_cycles,min_cycles,max_seconds,min_seconds,"
             "deviation_percent,busy_deviation_percent,speedup,bus_transfers,bus_bytes,bus_cycles,bus_seconds,"
-            "link_messages,link_bytes,balance_bus_percent,tile_wait_cycles,capsim_version");
+            "link_messages,link_bytes,balance_bus_percent,tile_wait_cycles,chunks_stolen,steal_link_bytes,"
+            "capsim_version");
   EXPECT_EQ(count_of(csv, "\n"), 9);
   const json doc = json::parse(read_file(dir / "out.json"));
   ASSERT_EQ(doc["points"].size(), 8u);
@@ -134,6 +135,34 @@ TEST(CliSweep, ADemandPointIsSimulatesBalanceDemandRun) {
   for (const json& cell : report["cells"]) waits += cell["tile_wait_cycles"].get<std::uint64_t>();
   EXPECT_EQ(demand["tile_wait_cycles"], waits);
   EXPECT_GT(demand["balance_bus_percent"].get<double>(), 0);
+}
+
+TEST(CliSweep, AStealPointIsSimulatesBalanceStealRunInItsMode) {
+  TempDir dir;
+  const std::string file = dir / "steal.json";
+  write(file, R"({"axes": {"scenes": [")" + kScenes + R"(/balls.csg"], "cells": ["2x2"], "modes": ["block", "dot"],)" +
+                  R"( "balance": ["steal:4"], "frame_average": [false, true], "sizes": ["32x24"]}})");
+  const RunResult r = run_capsim("sweep " + file + " -o " + (dir / "out") + " --quiet", dir);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("2 points (2 run, 0 kept from the earlier run); 2 left out: 2 frame_average with demand or "
+                       "steal"),
+            std::string::npos)
+      << r.out;
+  const json points = json::parse(read_file(dir / "out.json"))["points"];
+  ASSERT_EQ(points.size(), 2u);
+  const json& block = points[0];
+  EXPECT_EQ(block["mode"], "block");
+  EXPECT_EQ(block["balance"], "steal:4");
+  const RunResult sim = run_capsim("simulate " + kScenes +
+                                       "/balls.csg --size 32x24 --cells 2x2 --mode block --balance steal:4 -o " +
+                                       (dir / "s.png") + " --report " + (dir / "r.json"),
+                                   dir);
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const json report = json::parse(read_file(dir / "r.json"));
+  EXPECT_EQ(block["frame_cycles"], report["total_cycles"]);
+  EXPECT_EQ(block["chunks_stolen"], report["balancing"]["chunks_stolen"]);
+  EXPECT_EQ(block["steal_link_bytes"], report["balancing"]["links"]["bytes"]);
+  EXPECT_GT(block["chunks_stolen"].get<std::uint64_t>(), 0u);
 }
 
 TEST(CliSweep, OutputsDoNotDependOnTheThreads) {

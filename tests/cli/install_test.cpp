@@ -60,7 +60,7 @@ TEST(Install, TheInstalledProgramFindsItsDataFromAnyDirectoryAndWritesOnlyThere)
   const RunResult compared = run_program_in(work, capsim, "bench modes --size 48x48", dir);
   ASSERT_EQ(compared.status, 0) << compared.out << compared.err;
   EXPECT_TRUE(compared.out.ends_with((share / "baselines/modes-48x48.json").string() +
-                                     ": all 160 runs identical to the baseline\n"))
+                                     ": all 200 runs identical to the baseline\n"))
       << compared.out;
   // The reproduction on a small screen, from the installed models.
   const RunResult repro = run_program_in(work, capsim, "repro --size 16x16 --disb-frames 1", dir);

@@ -9,6 +9,7 @@
 #include "machine/run_figures.h"
 #include "machine/unit_memory.h"
 
+#include "support/balance_scenes.h"
 #include "support/shipped_scene.h"
 
 #include "capsim/parser.h"
@@ -27,22 +28,8 @@ namespace {
 
 PreparedScene balls(int width, int height) { return testing::shipped_scene("balls.csg", width, height); }
 
-// A few spheres and boxes at random places in front of the camera.
-PreparedScene random_scene(unsigned seed, int width, int height) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> place(-3, 3), size(0.3, 1.5);
-  std::string text = fmt::format(
-      "camera(eye = [0, -14, 4], center = [0, 0, 0], up = [0, 0, 1], fov = 40, size = [{}, {}]);\n"
-      "light(position = [10, -10, 20], color = [1, 1, 1]);\n",
-      width, height);
-  const int count = 2 + static_cast<int>(rng() % 6);
-  for (int i = 0; i < count; ++i) {
-    const double x = place(rng), y = place(rng), z = place(rng), s = size(rng);
-    text += i % 2 == 0 ? fmt::format("translate([{}, {}, {}]) sphere(r = {});\n", x, y, z, s)
-                       : fmt::format("translate([{}, {}, {}]) cube([{}, {}, {}]);\n", x, y, z, s, s, s);
-  }
-  return prepare_scene(parse_scene(text, "random.csg"), {});
-}
+using testing::random_scene;
+using testing::same_floats;
 
 MachineConfig demand_config(CellGrid grid, int tile_pixels, ScreenFormat format = ScreenFormat::Float) {
   MachineConfig c;
@@ -51,11 +38,6 @@ MachineConfig demand_config(CellGrid grid, int tile_pixels, ScreenFormat format 
   c.balance = {BalanceScheme::Demand, tile_pixels};
   c.screen = format;
   return c;
-}
-
-bool same_floats(const std::vector<float>& a, const std::vector<float>& b) {
-  // An 8-bit screen has no floats: memcmp must not see its null data.
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }
 
 // Every pixel traced once: each tile by one cell, the cells' pixels adding up

@@ -74,7 +74,7 @@ struct CellBench {
         for (auto& c : cells) c->bus_inbox().deliver(t);
       }
     });
-    links.on_delivery([this](const LinkMessage& m) { cells.at(m.to)->link_inbox().deliver(m); });
+    links.on_delivery([this](const LinkMessage& m) { cells.at(m.to)->deliver_link(m); });
   }
 
   // `before` cycles of its own; then for each unit the broadcasts back to
@@ -306,7 +306,7 @@ TEST(Cell, AntialiasedTracesCornersExchangesThemSubdividesAndReportsDone) {
   // One message on the links, typed: the horizontal step's first of cell 1.
   ASSERT_EQ(b.links.log().size(), 1u);
   const LinkMessage& m = b.links.log()[0];
-  EXPECT_EQ(m.packet, (CornerPacket{ExchangeStep::Horizontal, 0}));
+  EXPECT_EQ(m.packet, (LinkPacket{LinkKind::Corners, ExchangeStep::Horizontal, 0}));
   EXPECT_EQ(m.from, 1);
   EXPECT_EQ(m.to, 0);
   EXPECT_EQ(m.arrived, Cycles(1973));

@@ -36,10 +36,15 @@ TEST(FrameProtocol, TheProgramGoesBeforeTheFirstUnitOnlyThenEachFramesSceneAndVo
                             {BusMessage::VoxelData, 5}, {BusMessage::Start}}));
 }
 
-TEST(FrameProtocol, ACornerPacketIsNamedByItsStep) {
-  EXPECT_EQ(to_string(CornerPacket{ExchangeStep::Vertical, 3}), "corners (vertical step)");
-  EXPECT_EQ(to_string(CornerPacket{ExchangeStep::Horizontal, 0}), "corners (horizontal step)");
-  EXPECT_NE((CornerPacket{ExchangeStep::Vertical, 1}), (CornerPacket{ExchangeStep::Horizontal, 1}));
+TEST(FrameProtocol, ALinkPacketIsNamedByItsKindAndStep) {
+  EXPECT_EQ(to_string(LinkPacket{LinkKind::Corners, ExchangeStep::Vertical, 3}), "corners (vertical step)");
+  EXPECT_EQ(to_string(LinkPacket{LinkKind::Corners, ExchangeStep::Horizontal, 0}), "corners (horizontal step)");
+  EXPECT_NE((LinkPacket{LinkKind::Corners, ExchangeStep::Vertical, 1}),
+            (LinkPacket{LinkKind::Corners, ExchangeStep::Horizontal, 1}));
+  EXPECT_EQ(to_string(LinkPacket{LinkKind::StealRequest}), "steal request");
+  EXPECT_EQ(to_string(LinkPacket{LinkKind::Work}), "work");
+  EXPECT_EQ(to_string(LinkPacket{LinkKind::NoWork}), "no work");
+  EXPECT_EQ(to_string(LinkPacket{LinkKind::Pixels}), "pixels");
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ namespace {
 
 // The links carry corner packets; here each packet's index tells the messages
 // apart.
-CornerPacket packet(std::size_t index) { return {ExchangeStep::Vertical, index}; }
+LinkPacket packet(std::size_t index) { return {LinkKind::Corners, ExchangeStep::Vertical, index}; }
 
 TEST(NeighbourLinks, RoutesAlongTheRowFirstThenTheColumn) {
   const CostProfile profile = testing::round_number_profile();

@@ -106,15 +106,15 @@ TEST_F(ModesPage, PlotsAreInlineSvgOnePerModelAfterTheOverview) {
     ASSERT_FALSE(figure.empty()) << model;
     EXPECT_NE(figure.find(fmt::format(">{}: d = (Max - Min) / Max</text>", model)), std::string::npos) << model;
     EXPECT_NE(figure.find(fmt::format(">{}: speed-up against 4x4 cells</text>", model)), std::string::npos) << model;
-    // Three modes and demand, plain and antialiased, in both panels' legends.
+    // Three modes, demand and steal, plain and antialiased, in both panels' legends.
     for (const char* series : {">block</text>", ">line</text>", ">dot</text>", ">demand:64</text>",
-                               ">block, --aa 2</text>", ">line, --aa 2</text>", ">dot, --aa 2</text>",
-                               ">demand:64, --aa 2</text>"})
+                               ">steal:16</text>", ">block, --aa 2</text>", ">line, --aa 2</text>",
+                               ">dot, --aa 2</text>", ">demand:64, --aa 2</text>", ">steal:16, --aa 2</text>"})
       EXPECT_EQ(count(figure, series), 2u) << model << " " << series;
-    // Four cell counts per series: 8 series x 2 panels, 4 points each; the
+    // Four cell counts per series: 10 series x 2 panels, 4 points each; the
     // antialiased ones with square markers.
-    EXPECT_EQ(count(figure, "<circle "), 4u * 2 * 4) << model;
-    EXPECT_EQ(count(figure, "width=\"6\" height=\"6\""), 4u * 2 * 4) << model;
+    EXPECT_EQ(count(figure, "<circle "), 5u * 2 * 4) << model;
+    EXPECT_EQ(count(figure, "width=\"6\" height=\"6\""), 5u * 2 * 4) << model;
   }
 }
 
@@ -128,7 +128,7 @@ TEST_F(ModesPage, HoldsEveryRunsFiguresAndCommandInAPlainTable) {
     EXPECT_NE(table.find(heading), std::string::npos) << heading;
   const std::string body = between(table, "<tbody>", "</tbody>");
   ASSERT_EQ(count(body, "<tr "), bench().runs.size());
-  ASSERT_EQ(bench().runs.size(), 160u);
+  ASSERT_EQ(bench().runs.size(), 200u);
   std::size_t at = 0;
   for (const ModeRun& r : bench().runs) {
     const RunFigures& f = r.figures;
@@ -155,10 +155,12 @@ TEST_F(ModesPage, HoldsEveryRunsFiguresAndCommandInAPlainTable) {
         << name;
     for (const std::uint64_t n : {f.bus.bytes, f.links.messages, f.links.bytes})
       EXPECT_NE(row.find(fmt::format("<td data-value=\"{}\">", n)), std::string::npos) << name;
-    // Antialiased static runs exchange corners over the links; plain ones do
-    // not, nor does demand, whose tiles trace their own corners.
-    EXPECT_EQ(f.links.messages > 0, r.aa_depth > 0 && !r.balance.on_demand()) << name;
-    EXPECT_EQ(f.command.find("--balance demand:64") != std::string::npos, r.balance.on_demand()) << name;
+    // Antialiased static and steal runs exchange corners over the links;
+    // plain static ones do not, nor does demand, whose tiles trace their own
+    // corners; steal runs send requests for work (and on 16x16 pixels,
+    // whatever the grid, some are refused at least).
+    EXPECT_EQ(f.links.messages > 0, (r.aa_depth > 0 && !r.balance.on_demand()) || r.balance.stealing()) << name;
+    EXPECT_EQ(f.command.find("--balance " + r.scheme()) != std::string::npos, !r.balance.is_static()) << name;
   }
 }
 
@@ -168,9 +170,9 @@ TEST_F(ModesPage, HeaderGivesTheScreenProfileRunsAndAMatchedBaseline) {
   EXPECT_NE(header.find("<strong id=\"screen-size\">16x16</strong> pixels, profile <strong>cap</strong>"),
             std::string::npos)
       << header;
-  EXPECT_NE(header.find("<strong id=\"run-count\">160 runs</strong>"), std::string::npos) << header;
+  EXPECT_NE(header.find("<strong id=\"run-count\">200 runs</strong>"), std::string::npos) << header;
   EXPECT_NE(header.find("<p id=\"baseline\" class=\"baseline matched\">Matched the baseline "
-                        "<code>bench/baselines/modes-16x16.json</code>: all 160 runs identical"),
+                        "<code>bench/baselines/modes-16x16.json</code>: all 200 runs identical"),
             std::string::npos)
       << header;
   EXPECT_EQ(page.find("moved-table"), std::string::npos);
@@ -210,7 +212,7 @@ TEST_F(ModesPage, ListsTheMovedFiguresOldNewAndRatio) {
   o.moved.clear();
   EXPECT_NE(modes_page(bench(), o, "0.1.0").find("nothing moved against the old one"), std::string::npos);
   o.existed = false;
-  EXPECT_NE(modes_page(bench(), o, "0.1.0").find("was written from this run (160 runs)"), std::string::npos);
+  EXPECT_NE(modes_page(bench(), o, "0.1.0").find("was written from this run (200 runs)"), std::string::npos);
   // No baseline for the screen: the run stands alone.
   o = BaselineOutcome{"", false, false, "", {}};
   EXPECT_NE(between(modes_page(bench(), o, "0.1.0"), "<header>", "</header>")

@@ -26,7 +26,7 @@ TEST(CliBenchModes, MatchesItsStoredBaseline) {
                                 " --plot " + (dir / "modes.svg"),
                             dir);
   EXPECT_EQ(r.status, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find("all 160 runs identical to the baseline"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("all 200 runs identical to the baseline"), std::string::npos) << r.out;
   // The table: a header and one row per run.
   EXPECT_NE(r.out.find("model        scheme    cells  aa    frame s"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("disb/f00000  dot       16x16   2"), std::string::npos) << r.out;
@@ -44,7 +44,7 @@ TEST(CliBenchModes, MatchesItsStoredBaseline) {
 
 TEST(CliBenchModes, DemandRunsFollowTheStaticOnesWithTheirBalancingFigures) {
   const nlohmann::json base = nlohmann::json::parse(read_file(kBaseline));
-  // Per model and antialiasing: block, line, dot, then demand, on 4 grids each.
+  // Per model and antialiasing: block, line, dot, demand, then steal, on 4 grids each.
   const nlohmann::json& demand = base["runs"][14];  // balls, plain, demand:64, 8x8 cells
   EXPECT_EQ(demand["model"], "balls");
   EXPECT_EQ(demand["balance"], "demand:64");
@@ -56,12 +56,18 @@ TEST(CliBenchModes, DemandRunsFollowTheStaticOnesWithTheirBalancingFigures) {
   EXPECT_EQ(base["runs"][10]["mode"], "dot");
   EXPECT_FALSE(base["runs"][10].contains("balance"));
   EXPECT_FALSE(base["runs"][10].contains("balance_bus_percent"));
+  // Then steal, from dot mode, with what it stole.
+  const nlohmann::json& steal = base["runs"][18];  // balls, plain, steal:16, 8x8 cells
+  EXPECT_EQ(steal["balance"], "steal:16");
+  EXPECT_FALSE(steal.contains("mode"));
+  EXPECT_TRUE(steal["chunks_stolen"].is_number_unsigned());
+  EXPECT_GT(steal["steal_link_bytes"].get<std::uint64_t>(), 0u);
   // Tiles trace their own corners: an antialiased demand run sends nothing over the links.
-  const nlohmann::json& aa = base["runs"][30];  // balls, --aa 2, demand:64, 8x8 cells
+  const nlohmann::json& aa = base["runs"][34];  // balls, --aa 2, demand:64, 8x8 cells
   EXPECT_EQ(aa["balance"], "demand:64");
   EXPECT_EQ(aa["aa"], 2);
   EXPECT_EQ(aa["link_messages"], 0);
-  EXPECT_GT(base["runs"][26]["link_messages"].get<std::uint64_t>(), 0u);  // balls, --aa 2, dot, 8x8
+  EXPECT_GT(base["runs"][30]["link_messages"].get<std::uint64_t>(), 0u);  // balls, --aa 2, dot, 8x8
 }
 
 TEST(CliBenchModes, AMovedFigureFailsWithOldNewAndRatio) {

@@ -35,7 +35,8 @@ json record(const json& scene, const std::string& cells, const std::string& mode
           {"min_seconds", cycles / 2000.0}, {"deviation_percent", d}, {"busy_deviation_percent", d},
           {"bus_transfers", 4},      {"bus_bytes", 1234567},  {"bus_cycles", 10},
           {"bus_seconds", 0.01},     {"link_messages", 0},    {"link_bytes", 0},
-          {"balance_bus_percent", 0.0}, {"tile_wait_cycles", 0}, {"capsim_version", "0.1.0"}};
+          {"balance_bus_percent", 0.0}, {"tile_wait_cycles", 0},
+          {"chunks_stolen", 0},      {"steal_link_bytes", 0}, {"capsim_version", "0.1.0"}};
 }
 
 // 2 scenes (one a sequence) x 2 modes x 2 aa x 3 cell grids.

@@ -97,10 +97,10 @@ TEST(SweepSpec, ADemandPointStandsForEveryModeAndTakesNoFrameAveraging) {
   // Static: line and dot plain, dot frame-averaged; demand: once, plain; each on 2 grids.
   ASSERT_EQ(s.points.size(), 8u);
   EXPECT_EQ(s.left_out.frame_average_outside_dot, 2);  // static line, frame averaged
-  EXPECT_EQ(s.left_out.frame_average_on_demand, 4);    // demand, frame averaged, both modes
+  EXPECT_EQ(s.left_out.frame_average_balanced, 4);    // demand, frame averaged, both modes
   EXPECT_EQ(s.left_out.demand_per_mode, 2);            // demand, plain, at dot (line stands for it)
   EXPECT_EQ(s.left_out.summary(),
-            "8 left out: 2 frame_average outside dot mode, 4 frame_average on demand, 2 demand points repeated per "
+            "8 left out: 2 frame_average outside dot mode, 4 frame_average with demand or steal, 2 demand points repeated per "
             "mode");
   // The balance axis varies before the modes: static line, static dot, demand, then the same frame averaged.
   const auto inputs = [&](std::size_t i) { return capsim::sim::sweep_inputs(s.points[i]); };

@@ -7,6 +7,7 @@
 // launches in all. Skipped where Chromium is not installed (Debian package
 // chromium; .ci/run installs it).
 
+#include "support/balance_scenes.h"
 #include "support/cli_run.h"
 #include "support/chromium.h"
 #include "support/html_page.h"
@@ -106,7 +107,8 @@ TEST(HtmlReportInBrowser, ScriptBuildsThePlayerHeatMapTableAndTimelineFromTheRun
   const auto page = data_attributes(dom, "player");  // id="player" is on the <div>; the root has data-built
   const std::size_t root = dom.find("<html");
   const std::string html_tag = dom.substr(root, dom.find('>', root) - root);
-  EXPECT_NE(html_tag.find("data-built=\"player completion cellMap table timeline frameChart linkMap tileMap save\""),
+  EXPECT_NE(html_tag.find("data-built=\"player completion cellMap table timeline frameChart linkMap tileMap chunkMap "
+                          "save\""),
             std::string::npos)
       << html_tag;
   EXPECT_EQ(html_tag.find("data-failed"), std::string::npos) << html_tag;
@@ -231,6 +233,33 @@ TEST(HtmlReportInBrowser, DemandRunGetsItsTileMap) {
   EXPECT_EQ(number(tiles, "cells"), 6u);
   EXPECT_EQ(number(tiles, "frame"), 0u);
   EXPECT_EQ(dom.find("data-failed"), std::string::npos);
+}
+
+// Stealing, the chunk map shows which cell traced each pixel, decoded from
+// the page's zig-zag coded completion cycles: on a block split of BALLS,
+// whose background cells take chunks from their neighbours, it counts as
+// traced by another cell exactly the pixels of the chunks stolen.
+TEST(HtmlReportInBrowser, StealRunGetsItsChunkMap) {
+  const std::string chromium = find_chromium();
+  SKIP_WITHOUT_CHROMIUM(chromium);
+  TempDir dir;
+  const PreparedScene scene = balls(40, 30);
+  const Tracer tracer(scene, TraceOptions{});
+  MachineConfig config = config_of({2, 3}, PixelMode::Block, 0);
+  config.balance.scheme = BalanceScheme::Steal;
+  config.balance.chunk_pixels = 4;
+  const SimulationResult r = simulate_frame(tracer, config, 2, false);
+  const std::uint64_t stolen = testing::stolen_pixels(r);
+  ASSERT_GT(stolen, 0u) << "the test needs a stolen chunk";
+  write(dir / "steal.html", html_report(r, kFacts));
+  const std::string dom = dump_dom(chromium, dir, dir / "steal.html", "");
+  const auto chunks = data_attributes(dom, "chunk-map");
+  ASSERT_FALSE(chunks.empty()) << "no chunk map in the DOM";
+  EXPECT_EQ(number(chunks, "cells"), 6u);
+  EXPECT_EQ(number(chunks, "stolen"), stolen);
+  EXPECT_EQ(number(chunks, "frame"), 0u);
+  EXPECT_EQ(dom.find("data-failed"), std::string::npos);
+  EXPECT_NE(dom.find("id=\"stealing\""), std::string::npos);
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ TEST(Statistics, EveryCellStatisticIsInTheJsonTextAndPage) {
     const std::string text = format_report(r);
     const std::string page = html_report(r, kFacts);
     for (const auto& s : kCellStatistics) {
-      const bool kept = statistic_kept(s.scope, depth > 0, on_demand);
+      const bool kept = statistic_kept(s.scope, depth > 0, on_demand ? BalanceScheme::Demand : BalanceScheme::Static);
       for (std::size_t c = 0; c < r.cells.size(); ++c) {
         ASSERT_EQ(json["cells"][c].contains(s.json_key()), kept) << s.name << " depth " << depth << " " << on_demand;
         if (kept) {

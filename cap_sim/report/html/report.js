@@ -65,36 +65,39 @@
   // Unpacks a frame's completion cycles (pack_completion_cycles): per window
   // in order (a cell's; on demand a tile's, traced by window_cells[tile]), per
   // pixel in video-memory order, the cycles since the window's previous pixel
-  // as unsigned LEB128. Numbers stay exact up to 2^53.
+  // as unsigned LEB128, zig-zag coded when the frame is `signed` (stealing,
+  // where chunk k of a window was traced by chunk_cells[window][k]). Numbers
+  // stay exact up to 2^53.
   function decodeFrame(f) {
     const frame = page.frames[f];
     if (frame.decoded) return frame.decoded;
     const width = report.width, n = report.width * report.height;
     const bytes = atob(frame.completion);
-    const done = new Float64Array(n), owner = new Int32Array(n).fill(-1);
+    const done = new Float64Array(n), owner = new Int32Array(n).fill(-1), home = new Int32Array(n).fill(-1);
     let pos = 0, first = Infinity, last = 0;
     frame.windows.forEach(([ox, oy, columns, rows, sx, sy], window) => {
       const cell = frame.window_cells ? frame.window_cells[window] : window;
-      let t = 0;
+      let t = 0, k = 0;
       for (let r = 0; r < rows; r++) {
         let s = (oy + r * sy) * width + ox;
-        for (let c = 0; c < columns; c++, s += sx) {
+        for (let c = 0; c < columns; c++, s += sx, k++) {
           let v = 0, scale = 1, b;
           do {
             b = bytes.charCodeAt(pos++);
             v += (b & 127) * scale;
             scale *= 128;
           } while (b & 128);
-          t += v;
+          t += frame.signed ? (v % 2 === 0 ? v / 2 : -(v + 1) / 2) : v;
           done[s] = t;
-          owner[s] = cell;
+          owner[s] = frame.chunk_cells ? frame.chunk_cells[window][Math.floor(k / frame.chunk_pixels)] : cell;
+          home[s] = cell;
           if (t < first) first = t;
           if (t > last) last = t;
         }
       }
     });
     if (pos !== bytes.length) throw new Error('the completion data does not match the windows');
-    frame.decoded = { done, owner, first, last };
+    frame.decoded = { done, owner, home, first, last };
     return frame.decoded;
   }
 
@@ -647,6 +650,23 @@
     Object.assign(host.dataset, { links: report.links.length, bytes: bytes });
   }
 
+  // ---- maps of the screen by cell (balancing) ----
+  // Neighbouring ids get distant hues (the golden angle).
+  const cellColour = (id) =>
+    'hsl(' + ((id * 137.508) % 360).toFixed(1) + ', 65%, ' + (42 + (id % 3) * 12) + '%)';
+
+  // A canvas of the screen in `host`, scaled to about 512 pixels, with a
+  // frame selector when the run has several frames.
+  function screenMap(host, frames) {
+    const w = report.width, h = report.height;
+    const scale = Math.max(1, Math.floor(512 / Math.max(w, h)));
+    host.innerHTML = (frames > 1 ? '<div class="controls"><label>Frame <select>' +
+      Array.from({ length: frames }, (_, f) => '<option value="' + f + '">' + f + '</option>').join('') +
+      '</select></label></div>' : '') + '<canvas width="' + w * scale + '" height="' + h * scale + '"></canvas>';
+    const canvas = host.querySelector('canvas');
+    return { scale, canvas, select: host.querySelector('select'), context: canvas.getContext('2d') };
+  }
+
   // ---- balanced on demand: which cell traced each tile ----
   // The tiles are recomputed as balance.h cuts them: ceil(H / side) rows and
   // ceil(W / side) columns, split as block mode splits (floor(k * W / C)).
@@ -657,16 +677,7 @@
     const rows = Math.ceil(h / b.tile_side), cols = Math.ceil(w / b.tile_side);
     const start = (k, length, parts) => Math.floor(k * length / parts);
     const part = (p, length, parts) => Math.floor(((p + 1) * parts - 1) / length);
-    const scale = Math.max(1, Math.floor(512 / Math.max(w, h)));
-    // Neighbouring ids get distant hues (the golden angle).
-    const colour = (id) => 'hsl(' + ((id * 137.508) % 360).toFixed(1) + ', 65%, ' + (42 + (id % 3) * 12) + '%)';
-    const frames = b.tile_cells.length;
-    host.innerHTML = (frames > 1 ? '<div class="controls"><label>Frame <select>' +
-      b.tile_cells.map((_, f) => '<option value="' + f + '">' + f + '</option>').join('') +
-      '</select></label></div>' : '') + '<canvas width="' + w * scale + '" height="' + h * scale + '"></canvas>';
-    const canvas = host.querySelector('canvas');
-    const select = host.querySelector('select');
-    const context = canvas.getContext('2d');
+    const { scale, canvas, select, context } = screenMap(host, b.tile_cells.length);
     let owners = b.tile_cells[0];
 
     function draw(frame) {
@@ -674,7 +685,7 @@
       owners.forEach((cell, t) => {
         const r = Math.floor(t / cols), c = t % cols;
         const x0 = start(c, w, cols), y0 = start(r, h, rows);
-        context.fillStyle = colour(cell);
+        context.fillStyle = cellColour(cell);
         context.fillRect(x0 * scale, y0 * scale, (start(c + 1, w, cols) - x0) * scale,
           (start(r + 1, h, rows) - y0) * scale);
       });
@@ -694,10 +705,44 @@
   }
 
 
+  // ---- stealing: which cell traced each pixel ----
+  // From the page's completion data, whose chunks name their tracers
+  // (decodeFrame's owner; home is the cell whose window shows the pixel).
+  function buildChunkMap() {
+    const host = byId('chunk-map');
+    if (!host || !page.frames.length || !page.frames[0].chunk_cells) return;
+    const w = report.width, h = report.height;
+    const { scale, canvas, select, context } = screenMap(host, page.frames.length);
+    let owner = decodeFrame(0).owner;
+
+    function draw(frame) {
+      const decoded = decodeFrame(frame);
+      owner = decoded.owner;
+      let stolen = 0;
+      for (let s = 0; s < w * h; s++) {
+        context.fillStyle = cellColour(owner[s]);
+        context.fillRect((s % w) * scale, Math.floor(s / w) * scale, scale, scale);
+        if (owner[s] !== decoded.home[s]) stolen++;
+      }
+      Object.assign(host.dataset, { frame: frame, cells: new Set(owner).size, stolen: stolen });
+    }
+
+    if (select) select.addEventListener('change', () => draw(+select.value));
+    canvas.addEventListener('mousemove', (e) => {
+      const box = canvas.getBoundingClientRect();
+      const x = clamp(Math.floor((e.clientX - box.left) / box.width * w), 0, w - 1);
+      const y = clamp(Math.floor((e.clientY - box.top) / box.height * h), 0, h - 1);
+      showTip('pixel (' + x + ', ' + y + '), traced by ' + cellName(owner[y * w + x]), e);
+    });
+    canvas.addEventListener('mouseleave', hideTip);
+    draw(0);
+  }
+
   // plain HTML as they are.
   const parts = {
     player: buildPlayer, completion: buildCompletionHover, cellMap: buildCellMap, table: buildTable,
     timeline: buildTimeline, frameChart: buildFrameChart, linkMap: buildLinkMap, tileMap: buildTileMap,
+    chunkMap: buildChunkMap,
     save: () => {
       saveButton('save-trace', 'trace-data', 'capsim-trace.json');
       saveButton('save-report', 'report-data', 'capsim-report.json');
