@@ -1,6 +1,9 @@
-// STL and OFF readers for import().
+// STL and OFF readers for import(), and the dispatch to the AMF and 3MF ones.
 
 #include "scene/mesh_files.h"
+
+#include "scene/amf_import.h"
+#include "scene/threemf_import.h"
 
 #include "capsim/scene_limits.h"
 
@@ -83,8 +86,7 @@ class Words {
     const double v = std::strtod(w.c_str(), &end);
     if (end != w.c_str() + w.size() || !std::isfinite(v))
       fail(fmt::format("expected a coordinate, found '{}'", w));
-    if (!(std::abs(v) <= kMaxLength))
-      fail(fmt::format("coordinate {} lies beyond 1e30, the farthest capsim traces", w));
+    if (const std::string fault = coordinate_fault(v); !fault.empty()) fail(fmt::format("coordinate {} {}", w, fault));
     return v;
   }
 
@@ -211,14 +213,25 @@ PolygonMesh read_off(const std::string& path, const std::string& text) {
 
 }  // namespace
 
-bool is_mesh_file_name(const std::string& path) {
-  const std::string e = extension(path);
-  return e == ".stl" || e == ".off";
+std::string coordinate_fault(double v) {
+  static_assert(kMaxLength == 1e30, "the message names the range");
+  if (!std::isfinite(v)) return "is not a finite number";
+  if (!(std::abs(v) <= kMaxLength)) return "lies beyond 1e30, the farthest capsim traces";
+  return "";
 }
 
-PolygonMesh read_mesh_file(const std::string& path, std::size_t max_bytes) {
-  const std::string data = read_whole(path, max_bytes);
-  return extension(path) == ".stl" ? read_stl(path, data) : read_off(path, data);
+bool is_mesh_file_name(const std::string& path) {
+  const std::string e = extension(path);
+  return e == ".stl" || e == ".off" || e == ".amf" || e == ".3mf";
+}
+
+std::vector<MeshObject> read_mesh_file(const std::string& path, std::size_t max_bytes) {
+  std::string data = read_whole(path, max_bytes);
+  if (data.empty()) throw MeshFileError(fmt::format("{}: the file is empty", path));
+  const std::string e = extension(path);
+  if (e == ".amf") return read_amf(path, data);
+  if (e == ".3mf") return read_3mf(path, std::move(data));
+  return {{fmt::format("the mesh in {}", path), e == ".stl" ? read_stl(path, data) : read_off(path, data)}};
 }
 
 }  // namespace capsim::scene_file

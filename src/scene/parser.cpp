@@ -372,8 +372,14 @@ class Interpreter {
   }
 
   [[gnu::noinline]] CsgNode primitive(const Call& call, ContextId id) {
+    if (call.name == "import") {
+      // A file of several objects (AMF, 3MF) is their union, as in OpenSCAD.
+      std::vector<CsgNode> leaves;
+      for (Primitive& p : scene_file::read_import(call, import_dir_, max_file_bytes_))
+        leaves.push_back(place(std::move(p), call, id));
+      return pass_through(call, std::move(leaves));
+    }
     return place(call.name == "polyhedron" ? scene_file::read_polyhedron(call)
-                 : call.name == "import"   ? scene_file::read_import(call, import_dir_, max_file_bytes_)
                  : call.name == "surface"  ? scene_file::read_surface(call, import_dir_, max_file_bytes_)
                                            : scene_file::read_primitive(call),
                  call, id);

@@ -73,11 +73,12 @@ class PointCollector {
       no_children(call);
       add_transformed(tessellate_primitive(call).points, m, out);
       ++out.solids;
-    } else if (n == "polyhedron" || n == "import" || n == "surface") {
+    } else if (n == "import") {
       no_children(call);
-      add_mesh(n == "polyhedron" ? read_polyhedron(call)
-               : n == "import"   ? read_import(call, files_.import_dir, files_.max_bytes)
-                                 : read_surface(call, files_.import_dir, files_.max_bytes),
+      for (const Primitive& p : read_import(call, files_.import_dir, files_.max_bytes)) add_mesh(p, m, out);
+    } else if (n == "polyhedron" || n == "surface") {
+      no_children(call);
+      add_mesh(n == "polyhedron" ? read_polyhedron(call) : read_surface(call, files_.import_dir, files_.max_bytes),
                m, out);
     } else if (n == "hull") {
       read_hull_arguments(call);

@@ -114,7 +114,7 @@ Primitive read_polyhedron(const Call& call) {
   return p;
 }
 
-Primitive read_import(const Call& call, const std::string& import_dir, std::size_t max_bytes) {
+std::vector<Primitive> read_import(const Call& call, const std::string& import_dir, std::size_t max_bytes) {
   // OpenSCAD's export writes every parameter; those of 2-D files (layer,
   // origin, scale, dpi) and its file's timestamp mean nothing for a mesh.
   Args args(call, {"file", "layer", "convexity", "origin", "scale"}, {"timestamp", "dpi", "center", "id"});
@@ -123,23 +123,28 @@ Primitive read_import(const Call& call, const std::string& import_dir, std::size
   if (f.kind != Value::Kind::String) args.fail_type("file", "a string");
   const std::string file(f.string);
   if (!is_mesh_file_name(file))
-    args.fail_value("file", fmt::format("cannot import '{}': capsim imports STL (.stl) and OFF (.off) meshes; "
-                                        "2-D files (DXF, SVG) and AMF and 3MF are not supported",
+    args.fail_value("file", fmt::format("cannot import '{}': capsim imports STL (.stl), OFF (.off), AMF (.amf) and "
+                                        "3MF (.3mf) meshes, and DXF (.dxf) and SVG (.svg) as 2-D shapes",
                                         file));
   const std::string path = resolve_import(args, file, import_dir);
-  PolygonMesh m;
+  std::vector<MeshObject> objects;
   try {
-    m = read_mesh_file(path, max_bytes);
+    objects = read_mesh_file(path, max_bytes);
   } catch (const MeshFileError& e) {
     args.fail_value("file", fmt::format("cannot import '{}': {}", file, e.what()));
   }
-  MeshBuild built = build_closed_mesh(m);
-  if (!built.mesh)
-    args.fail_value("file", fmt::format("cannot import '{}': the mesh in {} is not a closed solid: {}", file, path,
-                                        built.defect.reason));
-  Primitive p = mesh_primitive(std::move(*built.mesh));
-  p.loc = call.loc;
-  return p;
+  // Each object of an AMF or 3MF file a closed solid of its own: OpenSCAD
+  // unites them, which the parser does by a union of their leaves.
+  std::vector<Primitive> solids;
+  for (const MeshObject& o : objects) {
+    MeshBuild built = build_closed_mesh(o.mesh);
+    if (!built.mesh)
+      args.fail_value("file", fmt::format("cannot import '{}': {} is not a closed solid: {}", file, o.name,
+                                          built.defect.reason));
+    solids.push_back(mesh_primitive(std::move(*built.mesh)));
+    solids.back().loc = call.loc;
+  }
+  return solids;
 }
 
 }  // namespace capsim::scene_file

@@ -36,10 +36,18 @@ class SolidReader {
       if (!built.mesh) throw SceneError(call.loc, fmt::format("{}() has no volume to project", n));
       return leaf(*built.mesh, m, call);
     }
-    if (n == "polyhedron" || n == "import" || n == "surface" || n == "hull" || n == "minkowski") {
+    if (n == "import") {
+      no_children(call);
+      CsgNode node;  // the union of the file's objects
+      node.op = CsgOp::Union;
+      node.loc = call.loc;
+      for (const Primitive& p : read_import(call, files_.import_dir, files_.max_bytes))
+        node.children.push_back(leaf(*p.mesh, m * p.to_world, call));
+      return node;
+    }
+    if (n == "polyhedron" || n == "surface" || n == "hull" || n == "minkowski") {
       if (n != "hull" && n != "minkowski") no_children(call);
       const Primitive p = n == "polyhedron" ? read_polyhedron(call)
-                          : n == "import"   ? read_import(call, files_.import_dir, files_.max_bytes)
                           : n == "surface"  ? read_surface(call, files_.import_dir, files_.max_bytes)
                           : n == "hull"     ? read_hull(call, files_)
                                             : read_minkowski(call, files_);

@@ -40,7 +40,7 @@ class StlScene {
     // The file's triangles as OpenSCAD wrote them, not checked for closure:
     // where OpenSCAD's parts only touch (example017's tripods on their
     // discs) its export is not a closed mesh, and Embree needs none.
-    const PolygonMesh m = scene_file::read_mesh_file(stl, std::size_t(1) << 30);
+    const PolygonMesh m = scene_file::read_mesh_file(stl, std::size_t(1) << 30).at(0).mesh;
     RTCDevice device = oracle::shared_device();
     scene_.reset(rtcNewScene(device));
     RTCGeometry g = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);

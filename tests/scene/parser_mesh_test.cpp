@@ -164,9 +164,9 @@ TEST(ParserMeshes, ImportRefusals) {
             at + "'huge.off': " + (dir / "huge.off") + ":2: 8 vertices and 6 faces cannot fit in a file of 16 bytes");
   EXPECT_EQ(refused("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"),
             at + "'range.off': " + (dir / "range.off") + ":6: point index 3 is out of range (0 to 2)");
-  EXPECT_EQ(refused("model.amf", ""),
-            at + "'model.amf': capsim imports STL (.stl) and OFF (.off) meshes; 2-D files (DXF, SVG) and AMF "
-                 "and 3MF are not supported");
+  EXPECT_EQ(refused("model.obj", ""),
+            at + "'model.obj': capsim imports STL (.stl), OFF (.off), AMF (.amf) and 3MF (.3mf) meshes, and DXF "
+                 "(.dxf) and SVG (.svg) as 2-D shapes");
   EXPECT_EQ(refusal("import(file = 3);", "t.csg"), "t.csg:1:15: argument 'file' of import must be a string, got a number");
   EXPECT_EQ(refusal("import();", "t.csg"), "t.csg:1:1: import needs the file to read: import(\"model.stl\")");
   // A file past the size limit is refused before it is read.
