@@ -38,7 +38,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection and import (DXF), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection and import (DXF, SVG), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
@@ -582,7 +582,7 @@ class Interpreter {
       if (name == "import") {
         throw SceneError(call.loc, fmt::format("import() of a mesh (STL, OFF) is not a 2-D shape: {}() extrudes "
                                                "square, circle, polygon, text, offset, projection and 2-D imports "
-                                               "(DXF)",
+                                               "(DXF, SVG)",
                                                revolve_ ? "rotate_extrude" : "linear_extrude"));
       }
       if (is_object(name) || is_setting(name)) {

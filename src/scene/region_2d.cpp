@@ -131,8 +131,7 @@ Polygon2d import_2d(const Call& call, const RegionSources& sources) {
       o.dpi = args.number("dpi", 72);
       if (!(o.dpi >= 0.001 && o.dpi <= 1e9)) args.fail_value("dpi", "the dpi must be between 0.001 and 1e9");
       o.center = args.boolean("center", false);
-      o.fn = args.number("$fn", 0), o.fs = args.number("$fs", 2), o.fa = args.number("$fa", 12);
-      return read_svg(text, o);
+      return read_svg(text, o);  // its curves are cut into fixed numbers of segments, not by $fn
     }
     DxfOptions o;
     if (args.has("layer")) {

@@ -9,6 +9,7 @@
 #include "scene/dxf_import.h"
 #include "scene/scene_lexer.h"
 #include "support/cli_run.h"
+#include "support/polygon2d_area.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -23,6 +24,7 @@ namespace {
 
 using capsim::testing::TempDir;
 using scene_file::Polygon2d;
+using testing::area;
 
 // A scene text's calls, read as the parser reads them.
 class Calls {
@@ -42,17 +44,6 @@ class Calls {
 // The region of the first call of `text`.
 Polygon2d region(std::string_view text, const std::string& dir = ".") {
   return scene_file::evaluate_region(Calls(text).first(), {dir, 1 << 20});
-}
-
-// Solids count positive, holes negative (Clipper's windings).
-double area(const Polygon2d& p) {
-  double a = 0;
-  for (const auto& o : p.outlines)
-    for (std::size_t i = 0; i < o.vertices.size(); ++i) {
-      const glm::dvec2 u = o.vertices[i], v = o.vertices[(i + 1) % o.vertices.size()];
-      a += (u.x * v.y - u.y * v.x) / 2;
-    }
-  return a;
 }
 
 std::string refusal(std::string_view text, const std::string& file = "t.csg") {

@@ -6,6 +6,7 @@
 
 #include "scene/text_glyphs.h"
 #include "support/cli_run.h"
+#include "support/openscad_svg.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>
@@ -18,6 +19,8 @@
 namespace capsim {
 namespace {
 
+using testing::has_openscad;
+using testing::read_svg_contours;
 using testing::TempDir;
 
 double signed_area(const TextContour& c) {
@@ -36,32 +39,6 @@ double area(const std::vector<TextContour>& contours) {
   for (const TextContour& c : contours) sum += signed_area(c);
   return std::abs(sum);
 }
-
-// The contours of OpenSCAD's SVG export: "M x,y L x,y ... z" per contour,
-// y pointing down.
-std::vector<TextContour> read_svg_contours(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::stringstream all;
-  all << in.rdbuf();
-  const std::string svg = all.str();
-  const std::size_t d = svg.find(" d=\"");
-  EXPECT_NE(d, std::string::npos) << svg;
-  std::istringstream path(svg.substr(d + 4, svg.find('"', d + 4) - d - 4));
-  std::vector<TextContour> contours;
-  std::string token;
-  while (path >> token) {
-    if (token == "M") contours.emplace_back();
-    if (token == "M" || token == "L") {
-      std::string xy;
-      path >> xy;
-      const std::size_t comma = xy.find(',');
-      contours.back().push_back({std::stod(xy.substr(0, comma)), -std::stod(xy.substr(comma + 1))});
-    }
-  }
-  return contours;
-}
-
-bool has_openscad() { return std::system("command -v openscad >/dev/null 2>&1") == 0; }
 
 TEST(TextGlyphs, CurveStepsFollowOpenScadsFragments) {
   EXPECT_EQ(openscad_fragments(10, 0, 2, 12), 30);   // 360 / 12
