@@ -160,4 +160,15 @@ TEST(SweepSpec, TheShippedExampleParses) {
   EXPECT_EQ(s.points[0].width, 64);
 }
 
+TEST(SweepSpec, TheBalancingFindingsSweepsParse) {
+  const std::string dir = std::string(CAPSIM_SOURCE_DIR) + "/bench/sweeps/";
+  const SweepSpec grid = capsim::sim::read_sweep_spec(dir + "balancing.json");
+  EXPECT_EQ(grid.points.size(), 280u);  // 5 scenes x 2 depths x 7 schemes x 4 grids
+  EXPECT_EQ(grid.left_out.total(), 0);
+  const SweepSpec disb = capsim::sim::read_sweep_spec(dir + "balancing-disb.json");
+  ASSERT_EQ(disb.points.size(), 7u);  // 6 schemes, and static frame averaged
+  EXPECT_EQ(disb.left_out.frame_average_balanced, 5);
+  EXPECT_EQ(disb.points[0].scene.files.size(), 64u);
+}
+
 }  // namespace
