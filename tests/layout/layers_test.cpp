@@ -64,11 +64,12 @@ class LayerCheck {
     const fs::path p(path);
     const std::string dir = p.parent_path().generic_string();
     for (const auto& [name, l] : layers_)
-      if (l.dir == dir) return name;
+      if (dir == l.dir || dir.rfind(l.dir + "/", 0) == 0) return name;  // a layer's stage folders are its own
     if (dir == "include/capsim") {
       const std::string stem = p.stem().string();
       for (const auto& [name, l] : layers_)
-        if (fs::exists(root_ / l.dir / (stem + ".cpp"))) return name;
+        for (const fs::directory_entry& e : fs::recursive_directory_iterator(root_ / l.dir))
+          if (e.path().filename() == stem + ".cpp") return name;
       if (const auto it = kPublicHeaderLayers.find(p.filename().string()); it != kPublicHeaderLayers.end()) return it->second;
       return "?";  // a public header no layer owns
     }
@@ -178,7 +179,7 @@ TEST(Layers, TheCheckFindsAnIncludeThatRunsBackUp) {
   ASSERT_EQ(up.size(), 1u);
   EXPECT_EQ(up[0], "cap_sim/machine/cell.cpp:2: \"report/sim_report.h\" runs back up: layer machine includes layer report");
   EXPECT_EQ(check.problems("src/trace/dda.cpp", "#include \"machine/cell.h\"\n").size(), 1u);
-  EXPECT_EQ(check.problems("src/scene/parser.cpp", "#include \"capsim/tracer.h\"\n").size(), 1u);
+  EXPECT_EQ(check.problems("src/scene/reading/parser.cpp", "#include \"capsim/tracer.h\"\n").size(), 1u);
   EXPECT_EQ(check.problems("tests/machine/x_test.cpp", "#include \"report/heatmap.h\"\n").size(), 1u);
   // A header named by its bare file name does not build, and is refused here.
   EXPECT_EQ(check.problems("cap_sim/machine/cell.cpp", "#include \"cycles.h\"\n").size(), 1u);

@@ -12,7 +12,7 @@
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"
 #include "oracle/oracle_embree.h"
-#include "scene/mesh_files.h"
+#include "scene/meshes/mesh_files.h"
 #include "support/cli_run.h"
 
 #include <fmt/core.h>

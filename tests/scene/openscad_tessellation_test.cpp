@@ -1,7 +1,7 @@
 // OpenSCAD's meshes of sphere, cylinder and cube: their points and faces, and
 // the same against OpenSCAD's own STL export of each primitive.
 
-#include "scene/openscad_tessellation.h"
+#include "scene/extrusions/openscad_tessellation.h"
 
 #include "capsim/parser.h"
 #include "support/cli_run.h"

@@ -2,7 +2,7 @@
 // at its FILE:LINE:COL.
 
 #include "capsim/parser.h"
-#include "scene/convex_hull.h"
+#include "scene/meshes/convex_hull.h"
 #include "support/cli_run.h"
 
 #include <fmt/format.h>

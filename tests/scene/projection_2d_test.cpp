@@ -1,6 +1,6 @@
 // projection(): shadows and sections of meshes under a CSG tree.
 
-#include "scene/projection_2d.h"
+#include "scene/regions/projection_2d.h"
 
 #include <gtest/gtest.h>
 

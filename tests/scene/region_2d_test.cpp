@@ -2,12 +2,12 @@
 // closed forms, the even-odd rule on crossing paths, DXF files, 2-D-only
 // designs, and every refusal at its FILE:LINE:COL.
 
-#include "scene/region_2d.h"
+#include "scene/regions/region_2d.h"
 
 #include "capsim/parser.h"
 #include "capsim/scene_limits.h"
-#include "scene/dxf_import.h"
-#include "scene/scene_lexer.h"
+#include "scene/regions/dxf_import.h"
+#include "scene/reading/scene_lexer.h"
 #include "support/cli_run.h"
 #include "support/polygon2d_area.h"
 

@@ -1,11 +1,11 @@
-// import() of SVG files (src/scene/svg_import.h): each shape and path
+// import() of SVG files (src/scene/regions/svg_import.h): each shape and path
 // command against outlines computed by hand, the page's units, viewBox, dpi
 // and center, the transforms composed down the tree; OpenSCAD 2021.01's own
 // drawings of the files in tests/data/svg_import (its SVG exports, stored,
 // and made again when openscad is installed); every refusal at its
 // FILE:LINE, and the command line's exit with nothing written.
 
-#include "scene/svg_import.h"
+#include "scene/regions/svg_import.h"
 
 #include "capsim/parser.h"
 #include "support/cli_run.h"

@@ -1,10 +1,10 @@
-// OpenSCAD's text() as capsim draws it (src/scene/text_glyphs.h), against
+// OpenSCAD's text() as capsim draws it (src/scene/regions/text_glyphs.h), against
 // OpenSCAD 2021.01's own drawing: its SVG export of the same 2-D text. The
 // export prints 6 significant digits and has been through Clipper's union
 // (which drops repeated and collinear vertices), so every vertex it prints
 // must lie within 1e-4 of one of ours, and the areas agree to 1e-5.
 
-#include "scene/text_glyphs.h"
+#include "scene/regions/text_glyphs.h"
 #include "support/cli_run.h"
 #include "support/openscad_svg.h"
 

@@ -2,7 +2,7 @@
 // The area of a 2-D shape (scene/clipper_utils.h) by the shoelace formula:
 // solids count positive, holes negative (Clipper's windings).
 
-#include "scene/clipper_utils.h"
+#include "scene/regions/clipper_utils.h"
 
 namespace capsim::testing {
 

@@ -3,7 +3,7 @@
 // twisted surface.
 
 #include "capsim/parser.h"
-#include "scene/twisted_extrusion.h"
+#include "scene/extrusions/twisted_extrusion.h"
 #include "support/cli_run.h"
 
 #include <fmt/format.h>

@@ -1,0 +1,182 @@
+// projection()'s children as meshes under a CSG tree.
+
+#include "scene/regions/scene_projection.h"
+
+#include "scene/extrusions/openscad_tessellation.h"
+#include "scene/regions/projection_2d.h"
+#include "scene/regions/region_2d.h"
+#include "scene/extrusions/scene_extrusion.h"
+#include "scene/reading/scene_args.h"
+#include "scene/meshes/scene_meshes.h"
+#include "scene/reading/scene_modules.h"
+#include "scene/meshes/scene_surface.h"
+#include "scene/extrusions/twisted_extrusion.h"
+
+#include <fmt/format.h>
+
+#include <optional>
+
+namespace capsim::scene_file {
+namespace {
+
+class SolidReader {
+ public:
+  explicit SolidReader(const FileAccess& files) : files_(files) {}
+
+  // The call's solid placed by m, or nullopt when it is left out.
+  std::optional<CsgNode> read(const Call& call, const glm::dmat4& m) {
+    for (const Modifier& mod : call.modifiers) {
+      if (mod.symbol == '!') throw SceneError(mod.loc, "the '!' (root) modifier is not supported inside projection()");
+      if (mod.symbol == '%' || mod.symbol == '*') return std::nullopt;
+    }
+    const std::string_view n = call.name;
+    if (n == "sphere" || n == "cube" || n == "cylinder") {
+      no_children(call);
+      MeshBuild built = build_closed_mesh(tessellate_primitive(call));
+      if (!built.mesh) throw SceneError(call.loc, fmt::format("{}() has no volume to project", n));
+      return leaf(*built.mesh, m, call);
+    }
+    if (n == "import") {
+      no_children(call);
+      CsgNode node;  // the union of the file's objects
+      node.op = CsgOp::Union;
+      node.loc = call.loc;
+      for (const Primitive& p : read_import(call, files_.import_dir, files_.max_bytes))
+        node.children.push_back(leaf(*p.mesh, m * p.to_world, call));
+      return node;
+    }
+    if (n == "polyhedron" || n == "surface" || n == "hull" || n == "minkowski") {
+      if (n != "hull" && n != "minkowski") no_children(call);
+      const Primitive p = n == "polyhedron" ? read_polyhedron(call)
+                          : n == "surface"  ? read_surface(call, files_.import_dir, files_.max_bytes)
+                          : n == "hull"     ? read_hull(call, files_)
+                                            : read_minkowski(call, files_);
+      return leaf(*p.mesh, m * p.to_world, call);
+    }
+    if (n == "linear_extrude") return extrusion(call, m);
+    if (n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror") {
+      return group(call, m * read_transform(call), CsgOp::Union);
+    }
+    if (n == "union" || n == "group" || n == "render" || n == "color" || n == "material") {
+      if (n == "color") {
+        read_color(call);
+      } else if (n == "material") {
+        read_material(call, Material{});
+      } else {
+        read_pass_through(call);
+      }
+      return group(call, m, CsgOp::Union);
+    }
+    if (n == "difference" || n == "intersection") {
+      read_pass_through(call);
+      return group(call, m, n == "difference" ? CsgOp::Difference : CsgOp::Intersection);
+    }
+    throw SceneError(call.loc, fmt::format("{}() under projection() is not supported: capsim projects sphere, cube, "
+                                           "cylinder, polyhedron, import, surface, hull, minkowski and "
+                                           "linear_extrude, under transforms, union, difference and intersection",
+                                           n));
+  }
+
+  std::vector<TriangleMesh> meshes;
+
+ private:
+  static void no_children(const Call& call) {
+    if (call.has_body)
+      throw SceneError(call.body_loc, fmt::format("{}() takes no children (missing ';' after {}(...)?)", call.name,
+                                                  call.name));
+  }
+
+  CsgNode leaf(const TriangleMesh& mesh, const glm::dmat4& m, const Call& call) {
+    TriangleMesh placed;
+    placed.triangles = mesh.triangles;
+    placed.vertices.reserve(mesh.vertices.size());
+    for (const glm::dvec3& v : mesh.vertices) {
+      placed.vertices.push_back(glm::dvec3(m * glm::dvec4(v, 1.0)));
+      placed.bounds.extend(placed.vertices.back());
+    }
+    meshes.push_back(std::move(placed));
+    CsgNode node;
+    node.is_leaf = true;
+    node.primitive = static_cast<int>(meshes.size()) - 1;
+    node.loc = call.loc;
+    return node;
+  }
+
+  // linear_extrude: each path of its region (scene/region_2d.h) swept as
+  // OpenSCAD sweeps it (one slice when straight), and the region's even-odd
+  // rule as CSG: each outline at even depth less the paths directly in it.
+  CsgNode extrusion(const Call& call, const glm::dmat4& m) {
+    const Extrusion e = read_linear_extrude(call);
+    Call shape = call;  // the children as one 2-D union
+    shape.name = "union";
+    shape.args.clear();
+    shape.modifiers.clear();
+    const NestedPaths region = nested_region_paths(shape, glm::dmat3(1.0), {files_.import_dir, files_.max_bytes});
+    Sweep sweep;
+    sweep.height = e.height;
+    sweep.twist = e.twist;
+    sweep.scale = e.curved() ? e.scale_xy : glm::dvec2(e.scale);
+    sweep.slices = e.slices;
+    if (sweep.slices == 0) {
+      std::vector<glm::dvec2> points;
+      for (const auto& path : region.paths) points.insert(points.end(), path.begin(), path.end());
+      sweep.slices = e.curved() ? extrusion_slices(points, e) : 1;
+    }
+    glm::dmat4 placed = m;
+    if (e.center) placed = m * glm::dmat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -e.height / 2, 1);
+    const std::size_t n = region.paths.size();
+    std::vector<CsgNode> leaves;
+    for (const auto& path : region.paths) {
+      MeshBuild built = build_closed_mesh(sweep_mesh(path, sweep));
+      if (!built.mesh) throw SceneError(call.loc, fmt::format("linear_extrude() under projection(): {}", built.defect.reason));
+      leaves.push_back(leaf(*built.mesh, placed, call));
+    }
+    CsgNode node;
+    node.op = CsgOp::Union;
+    node.loc = call.loc;
+    for (std::size_t k = 0; k < n; ++k) {
+      int depth = 0;
+      for (int at = region.parent[k]; at >= 0; at = region.parent[static_cast<std::size_t>(at)]) ++depth;
+      if (depth % 2) continue;
+      CsgNode outline;
+      outline.op = CsgOp::Difference;
+      outline.loc = call.loc;
+      outline.children.push_back(leaves[k]);
+      for (std::size_t h = 0; h < n; ++h)
+        if (region.parent[h] == static_cast<int>(k)) outline.children.push_back(leaves[h]);
+      node.children.push_back(std::move(outline));
+    }
+    return node;
+  }
+
+  // An operator over the children; a difference or intersection's first
+  // child decides, so a dropped first child leaves the rest to the next.
+  CsgNode group(const Call& call, const glm::dmat4& m, CsgOp op) {
+    CsgNode node;
+    node.op = op;
+    node.loc = call.loc;
+    for (const Call& child : call.children)
+      if (std::optional<CsgNode> c = read(child, m)) node.children.push_back(std::move(*c));
+    return node;
+  }
+
+  const FileAccess& files_;
+};
+
+}  // namespace
+
+std::vector<std::vector<glm::dvec2>> read_projection(const Call& call, const FileAccess& files) {
+  Args args(call, {}, {"cut", "convexity"});
+  const bool cut = args.boolean("cut", false);
+  args.number("convexity", 1);
+  SolidReader reader(files);
+  ProjectedSolids solids;
+  solids.root.op = CsgOp::Union;
+  solids.root.loc = call.loc;
+  for (const Call& child : call.children)
+    if (std::optional<CsgNode> c = reader.read(child, glm::dmat4(1.0))) solids.root.children.push_back(std::move(*c));
+  solids.meshes = std::move(reader.meshes);
+  return project_solids(solids, cut);
+}
+
+}  // namespace capsim::scene_file
