@@ -4,9 +4,9 @@
 // counter the reports write).
 
 #include "kernel/cycles.h"
-#include "machine/cell_grid.h"
-#include "machine/corner_exchange.h"
-#include "machine/cost_profile.h"
+#include "machine/parts/cell_grid.h"
+#include "machine/parts/corner_exchange.h"
+#include "machine/costs/cost_profile.h"
 
 #include "capsim/op_counts.h"
 

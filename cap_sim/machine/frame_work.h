@@ -9,10 +9,10 @@
 // other, and the host collects the group.
 
 #include "kernel/cycles.h"
-#include "machine/corner_exchange.h"
+#include "machine/parts/corner_exchange.h"
 #include "machine/scene_footprint.h"
 #include "machine/traced_cells.h"
-#include "machine/window_controller.h"
+#include "machine/parts/window_controller.h"
 
 #include <cstdint>
 #include <memory>

@@ -1,11 +1,11 @@
 #include "machine/machine.h"
 
 #include "kernel/event_kernel.h"
-#include "machine/cell.h"
-#include "machine/command_bus.h"
-#include "machine/host.h"
+#include "machine/parts/cell.h"
+#include "machine/parts/command_bus.h"
+#include "machine/parts/host.h"
 #include "machine/unit_memory.h"
-#include "machine/video_bus.h"
+#include "machine/parts/video_bus.h"
 
 #include <fmt/core.h>
 

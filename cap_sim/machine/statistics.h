@@ -5,9 +5,9 @@
 // page write every statistic of a table from these declarations, in their
 // order; adding one is a row here (and the counter it reads).
 
-#include "machine/balance.h"
+#include "machine/parts/balance.h"
 #include "machine/cell_record.h"
-#include "machine/neighbour_links.h"
+#include "machine/parts/neighbour_links.h"
 
 #include <array>
 #include <cstdint>

@@ -1,6 +1,6 @@
 #include "machine/traced_cells.h"
 
-#include "machine/balance.h"
+#include "machine/parts/balance.h"
 
 #include "capsim/host_threads.h"
 #include "capsim/image_io.h"

@@ -5,8 +5,8 @@
 // it, in that cell's video-memory order (traced in screen order, as render does). The event loop then decides, in
 // simulated time, when each cell does that work and writes its video memory.
 
-#include "machine/cost_profile.h"
-#include "machine/window_controller.h"
+#include "machine/costs/cost_profile.h"
+#include "machine/parts/window_controller.h"
 
 #include "capsim/progress.h"
 #include "capsim/render.h"

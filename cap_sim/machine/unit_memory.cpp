@@ -1,6 +1,6 @@
 #include "machine/unit_memory.h"
 
-#include "machine/corner_exchange.h"
+#include "machine/parts/corner_exchange.h"
 
 #include "capsim/antialias.h"
 

@@ -13,10 +13,10 @@
 // Frame averaged, frames_per_unit decides from both how many frames a unit
 // holds.
 
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 #include "machine/machine.h"
 #include "machine/scene_footprint.h"
-#include "machine/window_controller.h"
+#include "machine/parts/window_controller.h"
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "paper/calibration.h"
 
-#include "machine/builtin_profiles.h"
+#include "machine/costs/builtin_profiles.h"
 #include "paper/paper_figures.h"
 
 #include <nlohmann/json.hpp>

@@ -7,7 +7,7 @@
 // host the same as the M380 (one host: the runs give no way to tell two
 // apart, docs/calibration.md).
 
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 #include "paper/joint_fit.h"
 
 #include "capsim/op_counts.h"

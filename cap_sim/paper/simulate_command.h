@@ -5,9 +5,9 @@
 // differ from the defaults, and a sweep can print its points the same way.
 
 #include "capsim/antialias.h"
-#include "machine/balance.h"
-#include "machine/cell_grid.h"
-#include "machine/window_controller.h"
+#include "machine/parts/balance.h"
+#include "machine/parts/cell_grid.h"
+#include "machine/parts/window_controller.h"
 
 #include <string>
 #include <vector>

@@ -3,7 +3,7 @@
 #include "capsim/antialias.h"
 #include "capsim/prepared_scene.h"
 #include "capsim/voxel_grid.h"
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 
 #include <fmt/core.h>
 

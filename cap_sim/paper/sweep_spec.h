@@ -3,9 +3,9 @@
 // a list of values, and their cross product, the points, each one run of
 // `capsim simulate`. The file is checked whole before any point runs.
 
-#include "machine/balance.h"
-#include "machine/cell_grid.h"
-#include "machine/window_controller.h"
+#include "machine/parts/balance.h"
+#include "machine/parts/cell_grid.h"
+#include "machine/parts/window_controller.h"
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 // base64 (images as data URIs), and the completion cycles of a frame packed for
 // the page's player (docs/report.md describes the format).
 
-#include "machine/window_controller.h"
+#include "machine/parts/window_controller.h"
 
 #include <cstdint>
 #include <span>

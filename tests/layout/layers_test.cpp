@@ -1,5 +1,5 @@
 // The layers hold: every include of a project header names it by its path
-// from a root ("machine/cell.h", "capsim/dda.h"), and no file includes a
+// from a root ("machine/parts/cell.h", "capsim/dda.h"), and no file includes a
 // header of a layer above its own. The layers and what each links are the
 // build's (CAPSIM_LAYERS, from capsim_layer() in CMakeLists.txt); a layer may
 // include its own headers and those of the layers it links, directly or
@@ -173,16 +173,16 @@ TEST(Layers, NoIncludeRunsBackUp) {
 // The check itself finds what it is for, on made-up files of the real tree.
 TEST(Layers, TheCheckFindsAnIncludeThatRunsBackUp) {
   const LayerCheck check = project_check();
-  EXPECT_TRUE(check.problems("cap_sim/machine/cell.cpp", "#include \"kernel/cycles.h\"\n").empty());
-  EXPECT_TRUE(check.problems("cap_sim/machine/cell.cpp", "#include \"capsim/tracer.h\"\n").empty());
-  const std::vector<std::string> up = check.problems("cap_sim/machine/cell.cpp", "\n#include \"report/sim_report.h\"\n");
+  EXPECT_TRUE(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"kernel/cycles.h\"\n").empty());
+  EXPECT_TRUE(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"capsim/tracer.h\"\n").empty());
+  const std::vector<std::string> up = check.problems("cap_sim/machine/parts/cell.cpp", "\n#include \"report/sim_report.h\"\n");
   ASSERT_EQ(up.size(), 1u);
-  EXPECT_EQ(up[0], "cap_sim/machine/cell.cpp:2: \"report/sim_report.h\" runs back up: layer machine includes layer report");
-  EXPECT_EQ(check.problems("src/trace/dda.cpp", "#include \"machine/cell.h\"\n").size(), 1u);
+  EXPECT_EQ(up[0], "cap_sim/machine/parts/cell.cpp:2: \"report/sim_report.h\" runs back up: layer machine includes layer report");
+  EXPECT_EQ(check.problems("src/trace/dda.cpp", "#include \"machine/parts/cell.h\"\n").size(), 1u);
   EXPECT_EQ(check.problems("src/scene/reading/parser.cpp", "#include \"capsim/tracer.h\"\n").size(), 1u);
   EXPECT_EQ(check.problems("tests/machine/x_test.cpp", "#include \"report/heatmap.h\"\n").size(), 1u);
   // A header named by its bare file name does not build, and is refused here.
-  EXPECT_EQ(check.problems("cap_sim/machine/cell.cpp", "#include \"cycles.h\"\n").size(), 1u);
+  EXPECT_EQ(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"cycles.h\"\n").size(), 1u);
   // Test helpers belong to the tests only.
   EXPECT_TRUE(check.problems("tests/machine/x_test.cpp", "#include \"support/cli_run.h\"\n").empty());
   EXPECT_EQ(check.problems("src/cli/main.cpp", "#include \"support/cli_run.h\"\n").size(), 1u);

@@ -2,7 +2,7 @@
 // delivers what every cell needs, with exact timing; the screen equals the
 // tracer's antialiased render; the load spread on BALLS.
 
-#include "machine/corner_exchange.h"
+#include "machine/parts/corner_exchange.h"
 #include "machine/machine.h"
 #include "machine/run_figures.h"
 #include "support/sim_test_profile.h"

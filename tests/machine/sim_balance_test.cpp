@@ -1,10 +1,10 @@
-// Balancing on demand (machine/balance.h): the tiles, the host handing them
+// Balancing on demand (machine/parts/balance.h): the tiles, the host handing them
 // out over the command bus, and what must hold in every run: the screen is
 // the tracer's, every pixel is traced once, the bus carries what was sent, no
 // cell waits for a tile longer than the bus's queue and round trip allow, and
 // the cycles of a small run are exactly these.
 
-#include "machine/balance.h"
+#include "machine/parts/balance.h"
 #include "machine/machine.h"
 #include "machine/run_figures.h"
 #include "machine/unit_memory.h"

@@ -7,12 +7,12 @@
 #include "kernel/event_kernel.h"
 #include "kernel/mailbox.h"
 #include "kernel/timeline.h"
-#include "machine/cell.h"
-#include "machine/command_bus.h"
-#include "machine/corner_exchange.h"
-#include "machine/frame_protocol.h"
+#include "machine/parts/cell.h"
+#include "machine/parts/command_bus.h"
+#include "machine/parts/corner_exchange.h"
+#include "machine/parts/frame_protocol.h"
 #include "machine/frame_work.h"
-#include "machine/neighbour_links.h"
+#include "machine/parts/neighbour_links.h"
 #include "support/sim_test_profile.h"
 
 #include <fmt/core.h>

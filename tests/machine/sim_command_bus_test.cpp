@@ -1,6 +1,6 @@
 // The command bus: transfer cycles and the arbitration policy.
 
-#include "machine/command_bus.h"
+#include "machine/parts/command_bus.h"
 #include "support/sim_test_profile.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Cost profiles: the shipped files, unit conversion, strict parsing, and the
 // cycle arithmetic of a pixel and of voxel generation.
 
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 
 #include <gtest/gtest.h>
 

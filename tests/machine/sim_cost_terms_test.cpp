@@ -2,9 +2,9 @@
 // its Table 4-3 process, what it counts and how; the shipped profiles hold
 // exactly its keys.
 
-#include "machine/builtin_profiles.h"
-#include "machine/cost_profile.h"
-#include "machine/cost_terms.h"
+#include "machine/costs/builtin_profiles.h"
+#include "machine/costs/cost_profile.h"
+#include "machine/costs/cost_terms.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // What the host and the cells say to each other: the bus messages' table, the
 // broadcasts of a unit in order, the corner packets' names.
 
-#include "machine/frame_protocol.h"
+#include "machine/parts/frame_protocol.h"
 
 #include <gtest/gtest.h>
 

@@ -7,10 +7,10 @@
 #include "kernel/event_kernel.h"
 #include "kernel/mailbox.h"
 #include "kernel/timeline.h"
-#include "machine/command_bus.h"
-#include "machine/frame_protocol.h"
+#include "machine/parts/command_bus.h"
+#include "machine/parts/frame_protocol.h"
 #include "machine/frame_work.h"
-#include "machine/host.h"
+#include "machine/parts/host.h"
 #include "support/sim_test_profile.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // against the tracer alone, determinism across host threads, memory refusal, and
 // the load spread of the three pixel modes on BALLS.
 
-#include "machine/frame_protocol.h"
+#include "machine/parts/frame_protocol.h"
 #include "machine/machine.h"
 #include "machine/unit_memory.h"
 #include "machine/run_figures.h"

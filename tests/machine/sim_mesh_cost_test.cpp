@@ -2,7 +2,7 @@
 // charge under the shipped profiles, and the bytes a mesh takes in a cell's
 // memory.
 
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 #include "machine/scene_footprint.h"
 
 #include "capsim/parser.h"

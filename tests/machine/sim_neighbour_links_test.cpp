@@ -2,7 +2,7 @@
 // and the synthetic exchange of the antialiasing phase (§3.3): every cell sends a
 // message to its right, lower and lower-right neighbours.
 
-#include "machine/neighbour_links.h"
+#include "machine/parts/neighbour_links.h"
 #include "support/sim_test_profile.h"
 
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // terms charge under the shipped profiles, and the bytes a revolution takes in
 // a cell's memory.
 
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 #include "machine/scene_footprint.h"
 
 #include "capsim/parser.h"

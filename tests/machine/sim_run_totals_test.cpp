@@ -1,7 +1,7 @@
 // What a run reports beyond times: the operations every cell paid for, the
 // host's voxel-generation counts, and the command bus's traffic.
 
-#include "machine/frame_protocol.h"
+#include "machine/parts/frame_protocol.h"
 #include "machine/machine.h"
 #include "support/sim_test_profile.h"
 

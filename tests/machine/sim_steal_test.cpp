@@ -1,10 +1,10 @@
-// Stealing (machine/balance.h): the windows cut into chunks, idle cells
+// Stealing (machine/parts/balance.h): the windows cut into chunks, idle cells
 // taking half of a neighbour's unstarted chunks over the links and sending
 // the pixels back, and what must hold in every run: the screen is the
 // tracer's, every chunk is traced once, the links carry what was sent and
 // received, and the cycles of a small run are exactly these.
 
-#include "machine/balance.h"
+#include "machine/parts/balance.h"
 #include "machine/machine.h"
 #include "machine/run_figures.h"
 #include "machine/unit_memory.h"

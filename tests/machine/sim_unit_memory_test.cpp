@@ -2,7 +2,7 @@
 // frame's scene and voxel data) and its video memory, checked against the
 // profile; how many frames a frame-averaged unit holds.
 
-#include "machine/corner_exchange.h"
+#include "machine/parts/corner_exchange.h"
 #include "machine/machine.h"
 #include "machine/unit_memory.h"
 #include "support/sequence_builders.h"

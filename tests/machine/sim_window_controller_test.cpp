@@ -2,8 +2,8 @@
 // screen size and cell grid (exhaustive on small sizes), and the modes follow the
 // issue's rules.
 
-#include "machine/video_bus.h"
-#include "machine/window_controller.h"
+#include "machine/parts/video_bus.h"
+#include "machine/parts/window_controller.h"
 
 #include <gtest/gtest.h>
 

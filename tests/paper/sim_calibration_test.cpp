@@ -3,7 +3,7 @@
 // on a 128 x 128 screen to keep the test short, and the profiles hold what
 // the calibration fitted as docs/calibration.md states it.
 
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 #include "paper/calibration.h"
 #include "paper/lattice_scene.h"
 #include "paper/paper_figures.h"

@@ -1,4 +1,4 @@
-// 2-D regions through Clipper (scene/region_2d.h): offsets against their
+// 2-D regions through Clipper (scene/regions/region_2d.h): offsets against their
 // closed forms, the even-odd rule on crossing paths, DXF files, 2-D-only
 // designs, and every refusal at its FILE:LINE:COL.
 

@@ -2,7 +2,7 @@
 // What the balancing tests share: random small scenes, screens compared bit
 // for bit, and the pixels a steal run moved.
 
-#include "machine/balance.h"
+#include "machine/parts/balance.h"
 #include "machine/machine.h"
 
 #include "capsim/parser.h"

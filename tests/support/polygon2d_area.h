@@ -1,5 +1,5 @@
 #pragma once
-// The area of a 2-D shape (scene/clipper_utils.h) by the shoelace formula:
+// The area of a 2-D shape (scene/regions/clipper_utils.h) by the shoelace formula:
 // solids count positive, holes negative (Clipper's windings).
 
 #include "scene/regions/clipper_utils.h"

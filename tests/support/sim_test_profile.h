@@ -2,7 +2,7 @@
 // A cost profile with round numbers for the machine-part tests: 1 MHz clock,
 // so one cycle is one microsecond.
 
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 
 namespace capsim::sim::testing {
 

@@ -292,7 +292,7 @@ TEST(Revolution, BadInputIsRefusedAtItsPlace) {
   EXPECT_NE(refusal("rotate_extrude() polygon([[1, 0], [2, 0], [3, 0]]);")
                 .find("t.csg:1:26: polygon outline crosses itself or encloses no area"),
             std::string::npos);
-  // A polygon that crosses itself is clipped under the even-odd rule (scene/region_2d.h) and revolved.
+  // A polygon that crosses itself is clipped under the even-odd rule (scene/regions/region_2d.h) and revolved.
   EXPECT_EQ(refusal("rotate_extrude() polygon([[1, 0], [3, 2], [3, 0], [1, 2]]);"), "parsed without error");
   EXPECT_EQ(refusal("rotate_extrude(angle = 0) square(1);"),
             "t.csg:1:24: an angle of 0 turns the shape into no solid");

@@ -30,7 +30,7 @@ struct Extrusion {
 
   // A twist, or different scales in x and y (`scale` is then unused): the
   // sides are curved, and each leaf is OpenSCAD's tessellation of it
-  // (scene/twisted_extrusion.h) with `slices` slices, 0 until the shape's
+  // (scene/extrusions/twisted_extrusion.h) with `slices` slices, 0 until the shape's
   // points are known (extrusion_slices).
   double twist = 0;
   glm::dvec2 scale_xy{1.0, 1.0};
@@ -104,7 +104,7 @@ struct PolygonPaths {
 PolygonPaths read_polygon_paths(const Call& call, const glm::dmat3& plane);
 
 // Whether any path crosses or touches itself or another: such paths are
-// clipped first (scene/region_2d.h), not extruded one by one.
+// clipped first (scene/regions/region_2d.h), not extruded one by one.
 bool paths_meet(const std::vector<std::vector<glm::dvec2>>& paths);
 
 // Paths whose nesting is known (parent[k]: the path directly around path k,
@@ -117,7 +117,7 @@ ExtrudedPaths extrude_nested_paths(const std::vector<std::vector<glm::dvec2>>& p
 // when beyond 1e30 or too many to check.
 std::vector<std::vector<glm::dvec2>> read_text_paths(const Call& call, const glm::dmat3& plane);
 
-// text(): its glyphs' contours as OpenSCAD draws them (scene/text_glyphs.h),
+// text(): its glyphs' contours as OpenSCAD draws them (scene/regions/text_glyphs.h),
 // extruded as a polygon's paths. A font's contours do not cross, and its
 // holes wind against its solids, so the even-odd rule gives OpenSCAD's
 // non-zero union; glyphs that overlap are refused as crossing paths.

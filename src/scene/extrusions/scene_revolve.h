@@ -35,7 +35,7 @@ Primitive revolve_shape(const Call& call, const glm::dmat3& plane, const Revolve
 Primitive revolve_paths(const std::vector<std::vector<glm::dvec2>>& paths, const std::vector<Loc>& path_locs,
                         const Revolve& r, const Loc& loc, std::string_view what);
 
-// A clipped region's paths (scene/region_2d.h) revolved: Clipper's output
+// A clipped region's paths (scene/regions/region_2d.h) revolved: Clipper's output
 // does not cross, and may touch at vertices, so nothing is checked.
 Primitive revolve_region(const std::vector<std::vector<glm::dvec2>>& paths, const Revolve& r, const Loc& loc);
 

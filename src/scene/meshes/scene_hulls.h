@@ -2,7 +2,7 @@
 // hull() and minkowski(): solids OpenSCAD builds out of its children's
 // points, as closed meshes. The children are read here (not placed as leaves
 // of the CSG tree): their transforms, and the points OpenSCAD's meshes of
-// them have (scene/openscad_tessellation.h, polyhedra, imports, surfaces).
+// them have (scene/extrusions/openscad_tessellation.h, polyhedra, imports, surfaces).
 
 #include "capsim/scene.h"
 #include "scene/reading/scene_syntax.h"

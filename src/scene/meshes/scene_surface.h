@@ -1,5 +1,5 @@
 #pragma once
-// surface(file, center, invert, convexity): a height map (scene/height_maps.h)
+// surface(file, center, invert, convexity): a height map (scene/meshes/height_maps.h)
 // as a closed Mesh primitive, OpenSCAD's own mesh of it.
 
 #include "capsim/scene.h"

@@ -619,7 +619,7 @@ class Interpreter {
     return node;
   }
 
-  // A 2-D subtree that must be clipped (scene/region_2d.h), extruded as
+  // A 2-D subtree that must be clipped (scene/regions/region_2d.h), extruded as
   // its region's paths.
   [[gnu::noinline]] CsgNode clipped_node(const Call& call, ContextId ctx, const glm::dmat3& plane,
                                          const scene_file::Extrusion& e) {

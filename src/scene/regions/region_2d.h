@@ -3,7 +3,7 @@
 // tessellated (a circle into Calc::get_fragments_from_r's fragments), each
 // leaf sanitized under the even-odd rule, transforms applied to the
 // vertices, union, difference, intersection and offset() run by Clipper at
-// OpenSCAD's scale (scene/clipper_utils.h), DXF and SVG files read as
+// OpenSCAD's scale (scene/regions/clipper_utils.h), DXF and SVG files read as
 // OpenSCAD reads them. The result is a set of closed paths that do not cross
 // (they may touch at vertices), read under the even-odd rule.
 //

@@ -102,7 +102,7 @@ class SolidReader {
     return node;
   }
 
-  // linear_extrude: each path of its region (scene/region_2d.h) swept as
+  // linear_extrude: each path of its region (scene/regions/region_2d.h) swept as
   // OpenSCAD sweeps it (one slice when straight), and the region's even-odd
   // rule as CSG: each outline at even depth less the paths directly in it.
   CsgNode extrusion(const Call& call, const glm::dmat4& m) {

@@ -1,5 +1,5 @@
 #pragma once
-// projection(cut): the 2-D shape of its solid children (scene/projection_2d.h
+// projection(cut): the 2-D shape of its solid children (scene/regions/projection_2d.h
 // gives the geometry). The children are read here, not placed as leaves of
 // the scene's tree: each solid as OpenSCAD meshes it (a sphere is
 // OpenSCAD's polyhedron of it, as in the STL OpenSCAD would project), under

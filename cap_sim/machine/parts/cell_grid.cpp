@@ -1,4 +1,4 @@
-#include "machine/cell_grid.h"
+#include "machine/parts/cell_grid.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "machine/video_bus.h"
+#include "machine/parts/video_bus.h"
 
 #include <fmt/core.h>
 

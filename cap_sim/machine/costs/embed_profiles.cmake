@@ -13,8 +13,8 @@ foreach(profile ${profiles})
   endif()
   string(APPEND entries "    {\"${name}\", R\"capsim_json(${text})capsim_json\"},\n")
 endforeach()
-set(source "// Generated from cap_sim/profiles/*.json by cap_sim/machine/embed_profiles.cmake.
-#include \"machine/builtin_profiles.h\"
+set(source "// Generated from cap_sim/profiles/*.json by cap_sim/machine/costs/embed_profiles.cmake.
+#include \"machine/costs/builtin_profiles.h\"
 
 namespace capsim::sim {
 

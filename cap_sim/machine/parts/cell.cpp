@@ -1,7 +1,7 @@
-#include "machine/cell.h"
+#include "machine/parts/cell.h"
 
-#include "machine/balance.h"
-#include "machine/frame_protocol.h"
+#include "machine/parts/balance.h"
+#include "machine/parts/frame_protocol.h"
 #include "machine/unit_memory.h"
 
 #include "capsim/antialias.h"

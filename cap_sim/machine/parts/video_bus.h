@@ -3,7 +3,7 @@
 // each placed by its window controller. Every screen pixel must come from exactly
 // one cell; composition checks it.
 
-#include "machine/window_controller.h"
+#include "machine/parts/window_controller.h"
 
 #include "capsim/render.h"
 

@@ -24,9 +24,9 @@
 // frames, each with its own dot shift): the corners of all of them travel in
 // the same messages, one per pair of cells and step.
 
-#include "machine/cell_grid.h"
-#include "machine/frame_protocol.h"
-#include "machine/window_controller.h"
+#include "machine/parts/cell_grid.h"
+#include "machine/parts/frame_protocol.h"
+#include "machine/parts/window_controller.h"
 
 #include <cstdint>
 #include <vector>

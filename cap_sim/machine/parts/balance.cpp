@@ -1,4 +1,4 @@
-#include "machine/balance.h"
+#include "machine/parts/balance.h"
 
 #include <fmt/core.h>
 

@@ -13,8 +13,8 @@
 // then the lowest cell id; then the earliest request (FIFO).
 
 #include "kernel/event_kernel.h"
-#include "machine/cost_profile.h"
-#include "machine/frame_protocol.h"
+#include "machine/costs/cost_profile.h"
+#include "machine/parts/frame_protocol.h"
 
 #include <cstdint>
 #include <functional>

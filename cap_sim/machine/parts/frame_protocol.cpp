@@ -1,4 +1,4 @@
-#include "machine/frame_protocol.h"
+#include "machine/parts/frame_protocol.h"
 
 namespace capsim::sim {
 

@@ -1,6 +1,6 @@
 #pragma once
 // The cost profiles compiled into the binary: the JSON text of every file in
-// cap_sim/profiles/, embedded at build time (cap_sim/machine/embed_profiles.cmake), so
+// cap_sim/profiles/, embedded at build time (cap_sim/machine/costs/embed_profiles.cmake), so
 // capsim works from any directory.
 
 #include <span>

@@ -7,13 +7,13 @@
 #include "kernel/task.h"
 #include "kernel/timeline.h"
 #include "machine/cell_record.h"
-#include "machine/command_bus.h"
-#include "machine/corner_exchange.h"
+#include "machine/parts/command_bus.h"
+#include "machine/parts/corner_exchange.h"
 #include "machine/frame_work.h"
-#include "machine/neighbour_links.h"
-#include "machine/program_clock.h"
+#include "machine/parts/neighbour_links.h"
+#include "machine/parts/program_clock.h"
 #include "machine/traced_cells.h"
-#include "machine/window_controller.h"
+#include "machine/parts/window_controller.h"
 
 #include "capsim/render.h"
 

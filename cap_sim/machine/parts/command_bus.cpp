@@ -1,4 +1,4 @@
-#include "machine/command_bus.h"
+#include "machine/parts/command_bus.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "machine/window_controller.h"
+#include "machine/parts/window_controller.h"
 
 #include <stdexcept>
 

@@ -16,7 +16,7 @@
 // Tile t is the block of that layout's cell t: tiles are numbered row by row
 // from the top left, the order the host hands them out in.
 
-#include "machine/window_controller.h"
+#include "machine/parts/window_controller.h"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-#include "machine/cost_profile.h"
+#include "machine/costs/cost_profile.h"
 
-#include "machine/builtin_profiles.h"
+#include "machine/costs/builtin_profiles.h"
 #include "capsim/sha256.h"
 
 #include <fmt/core.h>

@@ -1,4 +1,4 @@
-#include "machine/program_clock.h"
+#include "machine/parts/program_clock.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "machine/corner_exchange.h"
+#include "machine/parts/corner_exchange.h"
 
 #include "capsim/antialias.h"
 

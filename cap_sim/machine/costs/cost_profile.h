@@ -5,7 +5,7 @@
 // `m380` are compiled into the binary, any other file can be loaded by path.
 
 #include "kernel/cycles.h"
-#include "machine/cost_terms.h"
+#include "machine/costs/cost_terms.h"
 
 #include "capsim/op_counts.h"
 

@@ -14,7 +14,7 @@
 // Screens that are not multiples of the grid are covered the same way; cells may
 // then own different pixel counts, or none at all.
 
-#include "machine/cell_grid.h"
+#include "machine/parts/cell_grid.h"
 
 #include <optional>
 #include <string>

@@ -1,7 +1,7 @@
-#include "machine/host.h"
+#include "machine/parts/host.h"
 
-#include "machine/balance.h"
-#include "machine/frame_protocol.h"
+#include "machine/parts/balance.h"
+#include "machine/parts/frame_protocol.h"
 
 #include <fmt/core.h>
 

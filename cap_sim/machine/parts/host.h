@@ -10,11 +10,11 @@
 #include "kernel/mailbox.h"
 #include "kernel/task.h"
 #include "kernel/timeline.h"
-#include "machine/command_bus.h"
-#include "machine/cost_profile.h"
-#include "machine/frame_protocol.h"
+#include "machine/parts/command_bus.h"
+#include "machine/costs/cost_profile.h"
+#include "machine/parts/frame_protocol.h"
 #include "machine/frame_work.h"
-#include "machine/program_clock.h"
+#include "machine/parts/program_clock.h"
 
 #include <cstddef>
 #include <functional>

@@ -11,9 +11,9 @@
 // axis goes the shorter way round (east or south where both are as short).
 
 #include "kernel/event_kernel.h"
-#include "machine/cell_grid.h"
-#include "machine/cost_profile.h"
-#include "machine/frame_protocol.h"
+#include "machine/parts/cell_grid.h"
+#include "machine/costs/cost_profile.h"
+#include "machine/parts/frame_protocol.h"
 
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "machine/neighbour_links.h"
+#include "machine/parts/neighbour_links.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "machine/cost_terms.h"
+#include "machine/costs/cost_terms.h"
 
 #include "kernel/cycles.h"
 
