@@ -44,7 +44,7 @@ struct ReturnedChunks {
 
 // What a cell measured about its run.
 struct CellRecord {
-  Cycles busy;    // tracing (corners, pixels, subdivision), all frames
+  Cycles busy;    // tracing (corners, pixels, subdivision) and its voxel shares, all frames
   Cycles comm;    // receiving broadcasts, and sending (waiting for the bus or a link
                   // included)
   Cycles finish;  // its last "done" message reached the host
@@ -82,6 +82,12 @@ struct CellRecord {
   std::uint64_t steal_requests = 0, steals_refused = 0, steal_waits = 0, chunks_stolen = 0;
   Cycles steal_wait;
   std::uint64_t requests_answered = 0, chunks_given = 0;
+  // Voxel generation on the cells (voxel_shares.h): its shares' work,
+  // placing and building, all frames; its waits for the other cells' shares
+  // (and the transfers of theirs it took in then); the bytes of its own two
+  // broadcasts a frame and of the others' it took in.
+  Cycles voxel_generation, voxel_gather;
+  std::uint64_t voxel_bytes_sent = 0, voxel_bytes_received = 0;
 };
 
 struct CellReport : CellRecord {

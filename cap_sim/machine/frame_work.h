@@ -10,6 +10,7 @@
 
 #include "kernel/cycles.h"
 #include "machine/parts/corner_exchange.h"
+#include "machine/parts/voxel_shares.h"
 #include "machine/scene_footprint.h"
 #include "machine/traced_cells.h"
 #include "machine/parts/window_controller.h"
@@ -28,6 +29,9 @@ struct FrameWork {
   Cycles voxel_generation;   // the host's Algorithm-3 for it
   VoxelGenCounts voxel_counts;  // the operations voxel_generation pays for
   std::vector<TracedCell> cells;
+  // With voxel generation on the cells, every cell's share (by cell id);
+  // empty when the host generates the grid.
+  std::vector<VoxelShare> voxel_shares;
 };
 
 // The numbers first, first + 1, ..., past_last - 1 in a range-for. (Written out

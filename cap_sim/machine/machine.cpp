@@ -15,14 +15,17 @@
 namespace capsim::sim {
 
 FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
-                     const CostProfile& profile) {
+                     const MachineConfig& config) {
+  if (config.voxel_generation == VoxelGeneration::Cells)
+    return FrameWork{layout, scene_footprint(scene), Cycles(), {}, std::move(traced),
+                     voxel_shares(scene, config.cells.cell_count(), config.profile.costs)};
   Cycles voxel_generation;
   try {
-    voxel_generation = voxel_generation_cost(scene.voxel_counts, profile.costs).total();
+    voxel_generation = voxel_generation_cost(scene.voxel_counts, config.profile.costs).total();
   } catch (const CycleOverflow& e) {
     throw e.inside("the host's voxel generation");
   }
-  return FrameWork{layout, scene_footprint(scene), voxel_generation, scene.voxel_counts, std::move(traced)};
+  return FrameWork{layout, scene_footprint(scene), voxel_generation, scene.voxel_counts, std::move(traced), {}};
 }
 
 std::uint64_t simulation_memory(const MachineConfig& config, int width, int height, int frames) {
@@ -83,7 +86,7 @@ WindowLayout frame_layout(const MachineConfig& config, int width, int height, in
 SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layout,
                            std::vector<TracedCell> traced, const MachineConfig& config) {
   std::vector<FrameWork> frames;
-  frames.push_back(frame_work(scene, layout, std::move(traced), config.profile));
+  frames.push_back(frame_work(scene, layout, std::move(traced), config));
   return run_frames(std::move(frames), config);
 }
 
@@ -135,7 +138,7 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
                       config.screen, config.completion_cycles,
                       config.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner,
                       config.balance.stealing() ? config.balance.chunk_pixels : 0);
-      work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config.profile));
+      work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config));
       if (!one) progress.advance(1);
     }
   }

@@ -13,6 +13,7 @@
 #include "machine/frame_work.h"
 #include "machine/parts/host.h"
 #include "machine/parts/neighbour_links.h"
+#include "machine/parts/voxel_shares.h"
 #include "machine/scene_footprint.h"
 #include "machine/traced_cells.h"
 #include "machine/parts/window_controller.h"
@@ -53,6 +54,10 @@ struct MachineConfig {
   // chunks that idle neighbours take (antialiased, the subdivision's). On
   // demand and stealing, frame averaging is refused.
   BalanceOptions balance;
+  // Who generates each frame's voxel grid (Algorithm-3): the host, which
+  // broadcasts it (the paper's), or the cells, each its share, exchanged over
+  // the command bus (voxel_shares.h).
+  VoxelGeneration voxel_generation = VoxelGeneration::Host;
 };
 
 // One frame as the video bus showed it, in the run's screen format: floats
@@ -95,7 +100,7 @@ struct SimulationResult {
   SceneFootprint footprint;  // the first frame's
   std::vector<CellReport> cells;
   CostBreakdown breakdown;  // every cell's work plus the host's voxel generation
-  VoxelGenCounts voxel_counts;  // the host's Algorithm-3 operations, all frames
+  VoxelGenCounts voxel_counts;  // the host's Algorithm-3 operations, all frames (none when the cells generate)
   Cycles frame;             // the last completion reached the host: the run's time
                             // (for one frame, the frame time)
   int width = 0, height = 0;
@@ -106,6 +111,10 @@ struct SimulationResult {
   // (in tile order), the cell that traced it.
   Host::Balancing balancing;
   BusTotals balance_bus;  // the bus's requests, grants and "no tile" answers
+  // Voxel generation on the cells: the bus's "voxel entries" and "voxel rows"
+  // broadcasts, and every cell's share of each frame's grid (by frame, by cell).
+  BusTotals voxel_entries_bus, voxel_rows_bus;
+  std::vector<std::vector<VoxelShare>> voxel_shares;
   std::vector<std::vector<CellId>> tile_cells;
   // Stealing: per frame, per cell's window, per chunk (balance.h), the cell
   // that traced it; and the links' stealing messages (requests, answers,
@@ -120,10 +129,11 @@ struct SimulationResult {
   std::uint64_t events = 0;  // events the kernel ran
 };
 
-// The work of one frame, traced ahead: precondition: traced came from
-// trace_cells on `scene` with `layout` and the profile's cell costs.
+// The work of one frame, traced ahead, and its voxel generation by the host
+// or by config's cells: precondition: traced came from trace_cells on `scene`
+// with `layout` and the profile's cell costs.
 FrameWork frame_work(const PreparedScene& scene, const WindowLayout& layout, std::vector<TracedCell> traced,
-                     const CostProfile& profile);
+                     const MachineConfig& config);
 
 // Throws std::invalid_argument when the config asks for what the machine
 // does not model: frame averaging outside dot mode; balanced on demand, a

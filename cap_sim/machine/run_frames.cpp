@@ -169,7 +169,8 @@ MachineParts::MachineParts(std::vector<FrameWork>& frames_in, std::vector<Distri
       host_track(timeline.add_track("host")),
       bus_track(timeline.add_track("command bus")),
       host({kernel, bus, timeline, frames, units, [this](std::size_t u) { unit_begins(u); },
-            [this](std::size_t u) { unit_ends(u); }, config.balance.on_demand()},
+            [this](std::size_t u) { unit_ends(u); }, config.balance.on_demand(),
+            config.voxel_generation == VoxelGeneration::Cells},
            host_track, grid.cell_count(), config.profile.program_bytes) {
   cells.reserve(grid.cell_count());
   for (CellId id = 0; id < grid.cell_count(); ++id) {
@@ -179,11 +180,13 @@ MachineParts::MachineParts(std::vector<FrameWork>& frames_in, std::vector<Distri
         id, track,
         Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased, config.keep_received_corners,
                      config.balance.on_demand(), config.balance.stealing() ? config.balance.chunk_pixels : 0,
-                     [this](CellId c, int f) -> const TracedCell& { return cells.at(c)->video_memory(f); }}));
+                     [this](CellId c, int f) -> const TracedCell& { return cells.at(c)->video_memory(f); },
+                     config.voxel_generation == VoxelGeneration::Cells}));
   }
   bus.on_delivery([this](const BusTransfer& t) {
     if (t.receiver == kAllCells) {
-      for (auto& cell : cells) cell->bus_inbox().deliver(t);
+      for (auto& cell : cells)
+        if (cell->id() != t.sender) cell->bus_inbox().deliver(t);
     } else if (t.receiver == kHost) {
       host.bus_inbox().deliver(t);
     } else {
@@ -221,6 +224,12 @@ void record_traffic(MachineParts& m, SimulationResult& result) {
       ++result.balance_bus.transfers;
       result.balance_bus.bytes += t.bytes;
       result.balance_bus.busy += t.released - t.granted;
+    }
+    if (t.message == BusMessage::VoxelEntries || t.message == BusMessage::VoxelRows) {
+      BusTotals& part = t.message == BusMessage::VoxelEntries ? result.voxel_entries_bus : result.voxel_rows_bus;
+      ++part.transfers;
+      part.bytes += t.bytes;
+      part.busy += t.released - t.granted;
     }
   }
   std::vector<int> link_tracks(static_cast<std::size_t>(m.grid.cell_count()) * 4, -1);
@@ -451,6 +460,8 @@ SimulationResult run_frames(std::vector<FrameWork> frames, const MachineConfig& 
   result.config = config;
   result.footprint = frames[0].footprint;
   const CostBreakdown host_work = host_voxel_generation(frames, result.voxel_counts);
+  for (const FrameWork& f : frames)
+    if (!f.voxel_shares.empty()) result.voxel_shares.push_back(f.voxel_shares);
   std::vector<DistributionUnit> units = distribution_units(frames, config);
 
   MachineParts machine(frames, units, config, result.timeline);

@@ -22,13 +22,16 @@ enum class StatisticUnit {
 };
 
 // When a statistic is kept: always, only when the run antialiases, only when
-// it is balanced on demand, or only when it steals.
-enum class StatisticScope { Always, Antialiased, Demand, Steal };
+// it is balanced on demand, only when it steals, or only when the cells
+// generate the voxel grids.
+enum class StatisticScope { Always, Antialiased, Demand, Steal, CellVoxels };
 
-constexpr bool statistic_kept(StatisticScope scope, bool antialiased, BalanceScheme balance) {
+constexpr bool statistic_kept(StatisticScope scope, bool antialiased, BalanceScheme balance,
+                              bool cells_generate_voxels = false) {
   return scope == StatisticScope::Always || (scope == StatisticScope::Antialiased && antialiased) ||
          (scope == StatisticScope::Demand && balance == BalanceScheme::Demand) ||
-         (scope == StatisticScope::Steal && balance == BalanceScheme::Steal);
+         (scope == StatisticScope::Steal && balance == BalanceScheme::Steal) ||
+         (scope == StatisticScope::CellVoxels && cells_generate_voxels);
 }
 
 template <class Part>
@@ -45,12 +48,12 @@ struct Statistic {
   std::string json_key() const { return unit == StatisticUnit::Cycles ? std::string(name) + "_cycles" : name; }
 };
 
-inline constexpr std::array<Statistic<CellReport>, 23> kCellStatistics = {{
+inline constexpr std::array<Statistic<CellReport>, 27> kCellStatistics = {{
     {"pixels", StatisticUnit::Count, StatisticScope::Always, "pixels it traced, all frames", "pixels", 8,
      "Pixels", [](const CellReport& c) { return c.pixels; }},
     {"rays", StatisticUnit::Count, StatisticScope::Always, "rays it traced, every kind", "rays", 9, "Rays",
      [](const CellReport& c) { return c.rays; }},
-    {"busy", StatisticUnit::Cycles, StatisticScope::Always, "tracing: its operations' costs", "busy cyc", 14,
+    {"busy", StatisticUnit::Cycles, StatisticScope::Always, "tracing (and its voxel shares, when the cells generate them): its operations' costs", "busy cyc", 14,
      "Busy", [](const CellReport& c) { return c.busy.count(); }},
     {"idle", StatisticUnit::Cycles, StatisticScope::Always, "finish - busy - comm: waiting", "idle cyc", 14,
      "Idle", [](const CellReport& c) { return c.idle.count(); }},
@@ -103,6 +106,18 @@ inline constexpr std::array<Statistic<CellReport>, 23> kCellStatistics = {{
     {"steal_bytes", StatisticUnit::Bytes, StatisticScope::Steal,
      "balancing bytes over the links: requests, answers and pixels it sent and took in", "steal B", 10,
      "Steal bytes", [](const CellReport& c) { return c.balance_bytes_sent + c.balance_bytes_received; }},
+    {"voxel_generation", StatisticUnit::Cycles, StatisticScope::CellVoxels,
+     "its shares of the voxel grids: placing its primitives and building its voxels' lists", "voxel gen cyc", 14,
+     "Voxel generation", [](const CellReport& c) { return c.voxel_generation.count(); }},
+    {"voxel_gather", StatisticUnit::Cycles, StatisticScope::CellVoxels,
+     "its waits for the other cells' shares, their transfers included", "voxel gather cyc", 16, "Voxel gather",
+     [](const CellReport& c) { return c.voxel_gather.count(); }},
+    {"voxel_bytes_sent", StatisticUnit::Bytes, StatisticScope::CellVoxels,
+     "its broadcasts of entries and rows on the bus", "voxel B out", 11, "Voxel bytes out",
+     [](const CellReport& c) { return c.voxel_bytes_sent; }},
+    {"voxel_bytes_received", StatisticUnit::Bytes, StatisticScope::CellVoxels,
+     "the other cells' entries and rows it took in", "voxel B in", 11, "Voxel bytes in",
+     [](const CellReport& c) { return c.voxel_bytes_received; }},
 }};
 
 inline constexpr std::array<Statistic<LinkTraffic>, 4> kLinkStatistics = {{

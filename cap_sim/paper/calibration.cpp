@@ -29,7 +29,7 @@ double multiplier(const FitParameter& p, Machine machine) {
 
 double term_count(CostTerm t, const WorkCounts& c) {
   const CostTermInfo& i = info(t);
-  return static_cast<double>(i.payer == CostPayer::Cell ? i.cell_count(c.ops, c.pixels) : i.host_count(c.voxels));
+  return static_cast<double>(i.payer == CostPayer::Cell ? i.cell_count(c.ops, c.pixels) : i.voxel_count(c.voxels));
 }
 
 std::string_view builtin_json(Machine machine) {
@@ -44,6 +44,16 @@ double four_digits(double x) {
   if (x == 0) return 0;
   const double scale = std::pow(10.0, 3 - std::floor(std::log10(std::abs(x))));
   return std::round(x * scale) / scale;
+}
+
+// A term's cost in microseconds into its section; whole values as integers,
+// as the files write them.
+void set_cost(nlohmann::ordered_json& j, CostTerm t, double us) {
+  const CostTermInfo& i = info(t);
+  if (us == std::floor(us) && us < 1e15)
+    j[profile_section(i.payer)][i.key] = static_cast<std::int64_t>(us);
+  else
+    j[profile_section(i.payer)][i.key] = us;
 }
 
 }  // namespace
@@ -78,11 +88,12 @@ std::string calibrated_profile_json(const std::vector<double>& x, Machine machin
   for (std::size_t k = 0; k < params.size(); ++k) {
     const CostTermInfo& i = info(params[k].term);
     const double us = four_digits(x[k] * multiplier(params[k], machine));
-    // Whole values as integers, as the files write them.
-    if (us == std::floor(us) && us < 1e15)
-      j[profile_section(i.payer)][i.key] = static_cast<std::int64_t>(us);
-    else
-      j[profile_section(i.payer)][i.key] = us;
+    set_cost(j, params[k].term, us);
+    // A cell generating voxels pays the host's fitted costs (as written) at a
+    // cell's speed: on the CAP 164 times them, on the M380 (one machine) the
+    // same.
+    if (i.payer == CostPayer::Host)
+      set_cost(j, cell_voxel_twin(params[k].term), four_digits(us * (machine == Machine::Cap ? paper::kCapOverM380 : 1.0)));
   }
   return j.dump(2) + "\n";
 }

@@ -37,6 +37,8 @@ std::string simulate_command(const SimulateSettings& s, CommandForm form) {
   }
   if (s.frame_average) cmd += " --frame-average";
   if (!s.balance.is_static()) cmd += " --balance " + to_string(s.balance);
+  if (s.voxel_generation != defaults.voxel_generation)
+    cmd += fmt::format(" --voxel-generation {}", to_string(s.voxel_generation));
   if (every || s.threads != defaults.threads) cmd += fmt::format(" --threads {}", s.threads);
   for (const std::string& d : s.defines) cmd += " -D " + single_quoted(d);
   return cmd;

@@ -7,6 +7,7 @@
 #include "capsim/antialias.h"
 #include "machine/parts/balance.h"
 #include "machine/parts/cell_grid.h"
+#include "machine/parts/voxel_shares.h"
 #include "machine/parts/window_controller.h"
 
 #include <string>
@@ -28,6 +29,7 @@ struct SimulateSettings {
   AntialiasOptions aa;  // --aa and --aa-threshold
   bool frame_average = false;
   BalanceOptions balance;  // --balance, written only when not static
+  VoxelGeneration voxel_generation = VoxelGeneration::Host;  // --voxel-generation, written only for cells
   int threads = 0;  // host threads; 0 = all hardware threads
   std::vector<std::string> defines;  // -D var=value for .scad input, in order
 };

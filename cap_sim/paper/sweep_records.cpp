@@ -13,15 +13,17 @@ namespace {
 using nlohmann::json;
 
 // The inputs' keys, in the order of the CSV's columns.
-const std::vector<std::string> kInputKeys = {"scene", "cells", "mode",         "balance",      "aa",
-                                             "profile", "size", "grid", "primary_only", "frame_average"};
+const std::vector<std::string> kInputKeys = {"scene",        "cells",         "mode",            "balance",
+                                             "aa",           "profile",       "size",            "grid",
+                                             "primary_only", "frame_average", "voxel_generation"};
 // The figures' keys, after them.
 const std::vector<std::string> kFigureKeys = {
     "frames",           "width",       "height",      "clock_hz",         "frame_cycles",
     "frame_seconds",    "max_cycles",  "min_cycles",  "max_seconds",      "min_seconds",
     "deviation_percent", "busy_deviation_percent",    "speedup",          "bus_transfers",
     "bus_bytes",        "bus_cycles",  "bus_seconds", "link_messages",    "link_bytes",
-    "balance_bus_percent", "tile_wait_cycles", "chunks_stolen", "steal_link_bytes", "capsim_version"};
+    "balance_bus_percent", "tile_wait_cycles", "chunks_stolen", "steal_link_bytes", "voxel_generation_cycles",
+    "voxel_bus_bytes",  "capsim_version"};
 
 json inputs_of(const json& record) {
   json inputs = json::object();
@@ -79,6 +81,8 @@ json sweep_record(const SweepPoint& p, const SimulationResult& r, const std::str
                  {"tile_wait_cycles", tile_wait.count()},
                  {"chunks_stolen", stolen},
                  {"steal_link_bytes", r.steal_links.bytes},
+                 {"voxel_generation_cycles", r.breakdown[CostCategory::VoxelGeneration].count()},
+                 {"voxel_bus_bytes", r.voxel_entries_bus.bytes + r.voxel_rows_bus.bytes},
                  {"capsim_version", version}});
   return record;
 }

@@ -23,8 +23,9 @@ using nlohmann::json;
 // The most frames a {"scene", "frames"} takes, as simulate's --frames.
 constexpr int kMaxSweepFrames = 99999;
 
-const std::vector<std::string> kAxes = {"scenes", "sizes",         "profiles", "grid",  "primary_only",
-                                        "aa",     "frame_average", "balance",  "modes", "cells"};
+const std::vector<std::string> kAxes = {"scenes",        "sizes",   "profiles",         "grid",
+                                        "primary_only",  "aa",      "frame_average",    "balance",
+                                        "voxel_generation", "modes", "cells"};
 
 struct Context {
   std::string file;
@@ -141,6 +142,10 @@ void apply(const Context& c, const std::string& axis, const json& v, const std::
     } catch (const std::invalid_argument& e) {
       c.fail(where, fmt::format("{}: {}", v.dump(), e.what()));
     }
+  } else if (axis == "voxel_generation") {
+    const auto by = parse_voxel_generation(text(c, v, where, "host or cells"));
+    if (!by) c.fail(where, fmt::format("{} is not who generates the voxels (accepted: host or cells)", v.dump()));
+    p.voxel_generation = *by;
   } else {
     p.frame_average = boolean(c, v, where);
   }
@@ -173,8 +178,8 @@ SweepSpec parse_sweep_spec(const std::string& text, const std::string& file) {
   const json& axes = doc["axes"];
   for (const auto& [key, value] : axes.items()) {
     if (std::find(kAxes.begin(), kAxes.end(), key) == kAxes.end())
-      c.fail("axes." + key, "is not an axis (accepted: scenes, cells, modes, balance, aa, profiles, sizes, grid, "
-                            "primary_only, frame_average)");
+      c.fail("axes." + key, "is not an axis (accepted: scenes, cells, modes, balance, voxel_generation, aa, profiles, "
+                            "sizes, grid, primary_only, frame_average)");
     if (!value.is_array() || value.empty()) c.fail("axes." + key, "an axis is a list of one value or more");
   }
   if (!axes.contains("scenes")) c.fail("axes.scenes", "is required: the scenes to run");
@@ -235,7 +240,8 @@ json sweep_inputs(const SweepPoint& p) {
           {"size", p.width > 0 ? fmt::format("{}x{}", p.width, p.height) : std::string("camera")},
           {"grid", p.grid > 0 ? json(p.grid) : json("auto")},
           {"primary_only", p.primary_only},
-          {"frame_average", p.frame_average}};
+          {"frame_average", p.frame_average},
+          {"voxel_generation", to_string(p.voxel_generation)}};
 }
 
 }  // namespace capsim::sim

@@ -5,6 +5,7 @@
 
 #include "machine/parts/balance.h"
 #include "machine/parts/cell_grid.h"
+#include "machine/parts/voxel_shares.h"
 #include "machine/parts/window_controller.h"
 
 #include <nlohmann/json.hpp>
@@ -42,6 +43,7 @@ struct SweepPoint {
   int grid = 0;                      // 0 = auto
   bool primary_only = false;
   bool frame_average = false;
+  VoxelGeneration voxel_generation = VoxelGeneration::Host;
 };
 
 // Points of the cross product that are left out, by why.

@@ -205,7 +205,7 @@ std::string cell_table(const SimulationResult& r) {
   const bool aa = r.config.aa.depth > 0;
   // Every cell statistic the run kept, cycles shown in seconds.
   auto kept = [&](const Statistic<CellReport>& s) {
-    return statistic_kept(s.scope, aa, r.config.balance.scheme);
+    return statistic_kept(s.scope, aa, r.config.balance.scheme, r.config.voxel_generation == VoxelGeneration::Cells);
   };
   std::string head = "<th data-key=\"cell\">Cell</th><th data-key=\"row\">Row</th><th data-key=\"col\">Col</th>";
   for (const auto& s : kCellStatistics)

@@ -75,6 +75,14 @@ VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
                           const std::vector<bool>& placed, const Aabb& universe, int n,
                           VoxelGenCounts* counts);
 
+// Algorithm-3's operations primitive by primitive, as generate_voxels counts
+// them: element i holds primitive i's (all zero where it is not placed), with
+// its (voxel, primitive) entries in voxel_entries and no grid_voxels (the
+// grid's, not a primitive's). Their sum plus the grid's n^3 voxels is
+// generate_voxels' count.
+std::vector<VoxelGenCounts> voxel_counts_by_primitive(const std::vector<PreparedPrimitive>& prims,
+                                                      const std::vector<bool>& placed, const Aabb& universe, int n);
+
 // The same grid filled from each primitive's world axis-aligned bounding box only:
 // the baseline that Algorithm-3's tighter fit is measured against.
 VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,

@@ -35,6 +35,7 @@ struct SimulateOptions {
   OptionText<> mode{"dot"};
   OptionText<> profile{"cap"};
   OptionText<> balance{"static"};
+  OptionText<> voxel_generation{"host"};
   std::string report;    // JSON report path; empty = none
   std::string trace;     // Chrome trace-event JSON path; empty = none
   OptionText<> heatmap;  // PNG path; empty = none
@@ -60,6 +61,7 @@ sim::SimulateSettings run_settings(const TracerSettings& t, const sim::MachineCo
   s.aa = t.aa;
   s.frame_average = config.frame_average;
   s.balance = config.balance;
+  s.voxel_generation = config.voxel_generation;
   s.threads = t.threads;
   s.defines = t.defines;
   return s;
@@ -116,6 +118,8 @@ sim::Provenance run_provenance(const std::vector<std::string>& argv, const Trace
   // Only a run that is not static records it, so that a static run's reports
   // stay as they were before balancing could be chosen.
   if (!config.balance.is_static()) p.options["balance"] = sim::to_string(config.balance);
+  if (config.voxel_generation == sim::VoxelGeneration::Cells)
+    p.options["voxel_generation"] = sim::to_string(config.voxel_generation);
   return p;
 }
 
@@ -154,6 +158,7 @@ sim::MachineConfig check_simulate_options(const SimulateOptions& o) {
   if (!o.heatmap.text.empty()) checked(o.heatmap);
   config.frame_average = o.frame_average;
   config.balance = sim::parse_balance(checked(o.balance));
+  config.voxel_generation = *sim::parse_voxel_generation(checked(o.voxel_generation));
   if (config.balance.on_demand()) {
     if (o.mode.option->count() > 0)
       throw UsageError(fmt::format("--balance {} hands out tiles, which the window controllers show where the host "
@@ -223,6 +228,13 @@ Command add_simulate_command(CLI::App& app, const std::vector<std::string>& argv
                                           "{}, e.g. demand:64), steal or steal:CHUNK (CHUNK from 1 to {})",
                                           sim::kMaxTilePixels, sim::kMaxChunkPixels)))
       ->default_val("static");
+  add_option(*cmd, "--voxel-generation", sim->voxel_generation,
+             "Who generates each frame's voxel grid (Algorithm-3): host (the paper's: the host generates it and "
+             "broadcasts it) or cells (each cell places a share of the primitives and builds a share of the "
+             "voxels, exchanged over the command bus; docs/balancing.md)",
+             refusing(CLI::IsMember(std::vector<std::string>{"host", "cells"}), "is not host or cells")
+                 .description("host or cells"))
+      ->default_val("host");
   accepts(cmd->add_option("--report", sim->report, "Write the report as JSON to this file"),
           CLI::Validator("a file path"));
   accepts(cmd->add_option("--trace", sim->trace,

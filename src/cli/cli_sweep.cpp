@@ -257,7 +257,7 @@ Command add_sweep_command(CLI::App& app) {
   auto o = std::make_shared<SweepOptions>();
   CLI::App* cmd = app.add_subcommand(
       "sweep",
-      "Simulate every point of a design-space sweep (a JSON file of axes: scenes, cells, modes, balance, aa, profiles, "
+      "Simulate every point of a design-space sweep (a JSON file of axes: scenes, cells, modes, balance, voxel_generation, aa, profiles, "
       "sizes, grid, primary_only, frame_average) into PREFIX.csv, PREFIX.json and a page of plots, PREFIX.html "
       "(docs/sweeps.md); built with MPI, under mpirun the ranks share the points");
   accepts(cmd->add_option("SPEC", o->spec.text, "The sweep file (.json)")->required(),

@@ -23,6 +23,7 @@ sim::SimulationResult run_sweep_point(const sim::SweepPoint& p, int threads) {
   config.mode = p.mode;
   config.frame_average = p.frame_average;
   config.balance = p.balance;
+  config.voxel_generation = p.voxel_generation;
   config.aa = s.aa;
   config.profile = sim::load_cost_profile(p.profile_path);
   config.screen = sim::ScreenFormat::Srgb8;  // as simulate's for a .png; the cycles do not depend on it

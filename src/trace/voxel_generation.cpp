@@ -295,6 +295,22 @@ VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
   return g;
 }
 
+std::vector<VoxelGenCounts> voxel_counts_by_primitive(const std::vector<PreparedPrimitive>& prims,
+                                                      const std::vector<bool>& placed, const Aabb& universe,
+                                                      int n) {
+  const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
+  const double eps = grid_epsilon(universe);
+  std::vector<VoxelGenCounts> counts(prims.size());
+  std::vector<std::uint32_t> voxels;
+  for (std::size_t i = 0; i < prims.size(); ++i) {
+    if (!placed[i]) continue;
+    voxels.clear();
+    place_primitive(prims[i], universe, n, vs, eps, voxels, &counts[i]);
+    counts[i].voxel_entries = voxels.size();
+  }
+  return counts;
+}
+
 VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
                                const std::vector<bool>& placed, const Aabb& universe, int n) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);

@@ -43,11 +43,12 @@ TEST(CliSweep, WritesACsvAndJsonRecordPerPointInOrder) {
   EXPECT_NE(r.out.find("8 points (8 run, 0 kept from the earlier run)"), std::string::npos) << r.out;
   const std::string csv = read_file(dir / "out.csv");
   EXPECT_EQ(csv.substr(0, csv.find('\n')),
-            "scene,cells,mode,balance,aa,profile,size,grid,primary_only,frame_average,frames,width,height,"
+            "scene,cells,mode,balance,aa,profile,size,grid,primary_only,frame_average,voxel_generation,frames,width,"
+            "height,"
             "clock_hz,frame_cycles,frame_seconds,max_cycles,min_cycles,max_seconds,min_seconds,"
             "deviation_percent,busy_deviation_percent,speedup,bus_transfers,bus_bytes,bus_cycles,bus_seconds,"
             "link_messages,link_bytes,balance_bus_percent,tile_wait_cycles,chunks_stolen,steal_link_bytes,"
-            "capsim_version");
+            "voxel_generation_cycles,voxel_bus_bytes,capsim_version");
   EXPECT_EQ(count_of(csv, "\n"), 9);
   const json doc = json::parse(read_file(dir / "out.json"));
   ASSERT_EQ(doc["points"].size(), 8u);

@@ -53,7 +53,7 @@ FrameWork frame(const WindowLayout& layout, std::vector<TracedCell> cells) {
   SceneFootprint footprint;
   footprint.primitives = kScene;
   footprint.voxel_grid = kVoxels;
-  return FrameWork{layout, footprint, Cycles(0), {}, std::move(cells)};
+  return FrameWork{layout, footprint, Cycles(0), {}, std::move(cells), {}};
 }
 
 using Broadcasts = std::vector<std::pair<BusMessage, std::uint64_t>>;
@@ -66,7 +66,7 @@ struct CellBench {
     for (CellId id = 0; id < grid.cell_count(); ++id)
       cells.push_back(std::make_unique<Cell>(
           id, timeline.add_track("cell " + std::to_string(id)),
-          Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased, true}));
+          Cell::Wiring{kernel, bus, links, grid, timeline, frames, units, antialiased, true, false, 0, {}}));
     bus.on_delivery([this](const BusTransfer& t) {
       if (t.receiver == kHost) {
         host_inbox.deliver(t);

@@ -58,6 +58,8 @@ std::string minimal_profile_text() {
                       "revolution_edge_test": 19, "quartic_test": 20},
     "host_costs_us": {"primitive": 1, "matmat": 2, "matvec": 3, "voxel_column": 4, "voxel_entry": 5,
                       "grid_voxel": 6},
+    "cell_voxel_costs_us": {"primitive": 21, "matmat": 22, "matvec": 23, "voxel_column": 24,
+                            "voxel_entry": 25, "grid_voxel": 26},
     "bus": {"bytes_per_second": 1000, "arbitration_us": 1.4, "latency_us": 1.6},
     "link": {"bits_per_second": 8000, "latency_us": 0, "topology": "mesh"},
     "cell_memory_bytes": 4096, "program_bytes": 1024, "video_memory_bytes": 2048})").dump();
@@ -92,6 +94,9 @@ TEST(CostProfile, RefusesUnknownMissingAndBadValues) {
   nlohmann::json no_voxel_visit = j;  // a profile written before the per-voxel work was a key
   no_voxel_visit["cell_costs_us"].erase("voxel_visit");
   expect_refused(no_voxel_visit.dump(), "cell_costs_us missing key \"voxel_visit\"");
+  nlohmann::json no_cell_voxels = j;  // a profile written before the cells could generate voxels
+  no_cell_voxels.erase("cell_voxel_costs_us");
+  expect_refused(no_cell_voxels.dump(), "cell_voxel_costs_us");
   nlohmann::json negative = j;
   negative["cell_costs_us"]["dda_step"] = -1;
   expect_refused(negative.dump(), "cell_costs_us.dda_step");
@@ -144,7 +149,7 @@ TEST(CostProfile, RoundingNamesTheTimesMovedByMoreThanOnePercent) {
   // At 1 MHz the minimal profile's times are whole cycles but the bus's
   // 1.4 us (1 cycle, 28.6 % off) and 1.6 us (2 cycles, 25 % off).
   const CostProfile p = parse_cost_profile(minimal_profile_text(), "test");
-  EXPECT_EQ(p.times.size(), 29u);  // 20 cell, 6 host, 2 bus, 1 link
+  EXPECT_EQ(p.times.size(), 35u);  // 20 cell, 6 host, 6 cell voxel, 2 bus, 1 link
   const std::vector<ProfileTime> off = p.rounding();
   ASSERT_EQ(off.size(), 2u);
   EXPECT_EQ(off[0].key, "bus.arbitration_us");
@@ -293,6 +298,31 @@ TEST(CostProfile, VoxelGenerationBeyondTheCounterNamesTheHostField) {
   } catch (const CycleOverflow& e) {
     EXPECT_NE(e.quantity().find("voxel entries x host_costs_us.voxel_entry (5 cycles)"),
               std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(CostProfile, VoxelGenerationOnACellCountsTheCellsVoxelCosts) {
+  const CostProfile p = parse_cost_profile(minimal_profile_text(), "test");  // 1 MHz: 1 cycle per us
+  VoxelGenCounts n;
+  n.primitives = 1;
+  n.matmat = 2;
+  n.matvec = 3;
+  n.columns = 4;
+  n.voxel_entries = 5;
+  n.grid_voxels = 6;
+  EXPECT_EQ(voxel_generation_cost(n, p.costs, CostPayer::CellVoxels)[CostCategory::VoxelGeneration],
+            Cycles(21 * 1 + 22 * 2 + 23 * 3 + 24 * 4 + 25 * 5 + 26 * 6));
+  EXPECT_EQ(voxel_generation_cost(n, p.costs, CostPayer::Host).total(),
+            Cycles(1 * 1 + 2 * 2 + 3 * 3 + 4 * 4 + 5 * 5 + 6 * 6));
+  EXPECT_THROW(voxel_generation_cost(n, p.costs, CostPayer::Cell), std::logic_error);
+  n = {};
+  n.grid_voxels = Cycles::kMax / 26 + 1;
+  try {
+    voxel_generation_cost(n, p.costs, CostPayer::CellVoxels);
+    FAIL() << "no overflow";
+  } catch (const CycleOverflow& e) {
+    EXPECT_NE(e.quantity().find("grid voxels x cell_voxel_costs_us.grid_voxel (26 cycles)"), std::string::npos)
         << e.what();
   }
 }

@@ -20,9 +20,10 @@ TEST(CostTerms, EveryTermHasOneProfileKeyInItsPayersSection) {
   for (const CostTermInfo& t : kCostTerms) {
     EXPECT_TRUE(keys.insert(profile_key(t.term)).second) << profile_key(t.term);
     EXPECT_EQ((t.cell_count != nullptr), t.payer == CostPayer::Cell) << t.key;
-    EXPECT_EQ((t.host_count != nullptr), t.payer == CostPayer::Host) << t.key;
-    EXPECT_EQ(t.payer == CostPayer::Host, t.category == CostCategory::VoxelGeneration) << t.key;
+    EXPECT_EQ((t.voxel_count != nullptr), t.payer != CostPayer::Cell) << t.key;
+    EXPECT_EQ(t.payer != CostPayer::Cell, t.category == CostCategory::VoxelGeneration) << t.key;
   }
+  EXPECT_EQ(profile_key(CostTerm::CellGridVoxel), "cell_voxel_costs_us.grid_voxel");
   EXPECT_EQ(profile_key(CostTerm::SphereTest), "cell_costs_us.sphere_test");
   EXPECT_EQ(profile_key(CostTerm::HostColumn), "host_costs_us.voxel_column");
   EXPECT_EQ(std::string(to_string(CostCategory::Dda)), "3DDDA (incl. set-up)");
@@ -68,7 +69,9 @@ TEST(CostTerms, EachCellTermCountsItsOperation) {
   EXPECT_EQ(count(CostTerm::PixelWrite), 12u);
 }
 
-TEST(CostTerms, EachHostTermCountsItsOperation) {
+// The host's and a cell's voxel generation count the same operations: each
+// host term has its cells' twin under the same key.
+TEST(CostTerms, EachVoxelTermCountsItsOperation) {
   VoxelGenCounts n;
   n.primitives = 1;
   n.matmat = 2;
@@ -76,13 +79,17 @@ TEST(CostTerms, EachHostTermCountsItsOperation) {
   n.columns = 4;
   n.voxel_entries = 5;
   n.grid_voxels = 6;
-  auto count = [&](CostTerm t) { return info(t).host_count(n); };
-  EXPECT_EQ(count(CostTerm::HostPrimitive), 1u);
-  EXPECT_EQ(count(CostTerm::HostMatmat), 2u);
-  EXPECT_EQ(count(CostTerm::HostMatvec), 3u);
-  EXPECT_EQ(count(CostTerm::HostColumn), 4u);
-  EXPECT_EQ(count(CostTerm::HostEntry), 5u);
-  EXPECT_EQ(count(CostTerm::HostGridVoxel), 6u);
+  auto count = [&](CostTerm t) { return info(t).voxel_count(n); };
+  const CostTerm host[] = {CostTerm::HostPrimitive, CostTerm::HostMatmat, CostTerm::HostMatvec,
+                           CostTerm::HostColumn,    CostTerm::HostEntry,  CostTerm::HostGridVoxel};
+  const CostTerm cells[] = {CostTerm::CellPrimitive, CostTerm::CellMatmat, CostTerm::CellMatvec,
+                            CostTerm::CellColumn,    CostTerm::CellEntry,  CostTerm::CellGridVoxel};
+  for (std::uint64_t k = 0; k < 6; ++k) {
+    EXPECT_EQ(count(host[k]), k + 1) << info(host[k]).key;
+    EXPECT_EQ(count(cells[k]), k + 1) << info(cells[k]).key;
+    EXPECT_EQ(cell_voxel_twin(host[k]), cells[k]) << info(host[k]).key;
+  }
+  EXPECT_THROW(cell_voxel_twin(CostTerm::SphereTest), std::logic_error);
 }
 
 // A profile's cost of a term is read from the term's key: each value of a

@@ -35,7 +35,7 @@ FrameWork frame(std::uint64_t voxel_generation, std::uint64_t scene_bytes) {
   SceneFootprint footprint;
   footprint.primitives = scene_bytes;
   footprint.voxel_grid = kVoxels;
-  return FrameWork{WindowLayout(PixelMode::Dot, {1, 2}, 2, 1), footprint, Cycles(voxel_generation), {}, {}};
+  return FrameWork{WindowLayout(PixelMode::Dot, {1, 2}, 2, 1), footprint, Cycles(voxel_generation), {}, {}, {}};
 }
 
 // The host under test, the bus, and two cells played by the test: cell c

@@ -4,6 +4,7 @@
 
 #include "paper/calibrate.h"
 #include "paper/calibration.h"
+#include "machine/costs/builtin_profiles.h"
 
 #include <gtest/gtest.h>
 
@@ -43,6 +44,25 @@ TEST(Calibrate, ARoundRunsAtTheFittedCostsAndTheBestWins) {
   const CostProfile m380 = calibrated_profile(c.x(), Machine::M380);
   const std::vector<double> back = parameter_values(m380, Machine::M380);
   for (std::size_t k = 0; k < back.size(); ++k) EXPECT_NEAR(back[k], c.x()[k], 1e-3 * c.x()[k] + 1e-9) << k;
+}
+
+// The cells' voxel costs that calibrate writes are the host's (as written)
+// times 164 on the CAP, the same on the M380: the shipped profiles hold what
+// it writes from their own values.
+TEST(Calibrate, WritesTheCellsVoxelCostsFromTheHosts) {
+  for (const Machine machine : {Machine::Cap, Machine::M380}) {
+    const std::string name = machine == Machine::Cap ? "cap" : "m380";
+    const nlohmann::json written = nlohmann::json::parse(
+        calibrated_profile_json(parameter_values(load_cost_profile(name), machine), machine));
+    std::string builtin;
+    for (const BuiltinProfile& b : builtin_profiles())
+      if (b.name == name) builtin = std::string(b.json);
+    EXPECT_EQ(written["cell_voxel_costs_us"], nlohmann::json::parse(builtin)["cell_voxel_costs_us"]) << name;
+    if (machine == Machine::Cap) {
+      EXPECT_EQ(written["cell_voxel_costs_us"]["primitive"], 194800);  // 1188 x 164 = 194832, to 4 digits
+      EXPECT_EQ(written["cell_voxel_costs_us"]["grid_voxel"], 11970);   // 73.01 x 164 = 11973.64
+    }
+  }
 }
 
 TEST(Calibrate, AlternativesVaryOneAssumptionEach) {

@@ -8,6 +8,7 @@
 #include "capsim/prepared_scene.h"
 #include "capsim/render.h"
 
+#include <fmt/core.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -116,6 +117,15 @@ TEST(CliLattice, WritesTheSceneThatRunsUse) {
   EXPECT_EQ(parsed.camera->eye, built.camera->eye);
   EXPECT_EQ(parsed.camera->width, 80);
   EXPECT_EQ(parsed.camera->height, 60);
+}
+
+// The voxel generation sweep's lattices (bench/sweeps/lattices) are what
+// `capsim lattice N -o FILE` writes at its default size: they can be made again.
+TEST(Lattice, TheSweepsLatticeFilesAreTheGeneratorsOwn) {
+  for (const int n : {16, 512, 1000, 4096, 6859}) {
+    const std::string file = fmt::format("{}/bench/sweeps/lattices/lattice-{}.csg", CAPSIM_SOURCE_DIR, n);
+    EXPECT_EQ(read_file(file), lattice_scene_text(lattice_shape(n), 512, 512)) << file;
+  }
 }
 
 TEST(CliLattice, RefusesACountOutOfRangeAndWritesNothing) {

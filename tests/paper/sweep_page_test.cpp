@@ -29,6 +29,7 @@ json record(const json& scene, const std::string& cells, const std::string& mode
   return {{"scene", scene},          {"cells", cells},        {"mode", mode},            {"balance", "static"},
           {"aa", aa},                {"profile", "cap"},      {"size", "16x16"},
           {"grid", "auto"},          {"primary_only", false}, {"frame_average", false},
+          {"voxel_generation", "host"},
           {"frames", 1},             {"width", 16},           {"height", 16},
           {"clock_hz", 1000},        {"frame_cycles", cycles}, {"frame_seconds", cycles / 1000.0},
           {"max_cycles", cycles},    {"min_cycles", cycles / 2}, {"max_seconds", cycles / 1000.0},
@@ -72,7 +73,8 @@ TEST(SweepPage, HeaderNamesTheVaryingAxesAndTheFixedOnes) {
   const std::string page = sweep_page(records(), "small.json", "0.1.0");
   EXPECT_NE(page.find("<title>capsim sweep: small.json</title>"), std::string::npos);
   EXPECT_NE(page.find("<strong id=\"point-count\">24 points</strong>; the same for every point: balance static, "
-                      "profile cap, size 16x16, grid auto, primary_only false, frame_average false."),
+                      "profile cap, size 16x16, grid auto, primary_only false, frame_average false, "
+                      "voxel_generation host."),
             std::string::npos);
   EXPECT_NE(page.find("<li><strong>cells</strong>: 2x2, 4x4 and 8x8</li>"), std::string::npos);
   EXPECT_NE(page.find("<li><strong>aa</strong>: 0 and 2</li>"), std::string::npos);

@@ -12,7 +12,7 @@ namespace {
 json record(const std::string& scene, const std::string& cells, long long frame_cycles) {
   return {{"scene", scene},        {"cells", cells},   {"mode", "dot"},        {"balance", "static"}, {"aa", 0},
           {"profile", "cap"},      {"size", "16x16"},  {"grid", "auto"},       {"primary_only", false},
-          {"frame_average", false}, {"frame_cycles", frame_cycles}};
+          {"frame_average", false}, {"voxel_generation", "host"}, {"frame_cycles", frame_cycles}};
 }
 
 TEST(SweepRecords, SpeedupIsAgainstTheFewestCellsOfTheSameOtherInputs) {

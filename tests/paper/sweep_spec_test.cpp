@@ -64,10 +64,11 @@ TEST(SweepSpec, MissingAxesTakeSimulatesDefaults) {
   EXPECT_EQ(p.grid, 0);
   EXPECT_FALSE(p.primary_only);
   EXPECT_FALSE(p.frame_average);
+  EXPECT_EQ(p.voxel_generation, capsim::sim::VoxelGeneration::Host);
   EXPECT_EQ(capsim::sim::sweep_inputs(p).dump(),
             R"({"aa":0,"balance":"static","cells":"8x8","frame_average":false,"grid":"auto","mode":"dot",)"
             R"("primary_only":false,)"
-            R"("profile":"cap","scene":"balls.csg","size":"camera"})");
+            R"("profile":"cap","scene":"balls.csg","size":"camera","voxel_generation":"host"})");
 }
 
 TEST(SweepSpec, SequencesAndAnimatedScenes) {
@@ -142,8 +143,10 @@ TEST(SweepSpec, ErrorsNameTheFileAndTheValuesPath) {
   EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "primary_only": ["yes"]}})"),
             kFile + R"(: axes.primary_only[0]: "yes" is not true or false)");
   EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "colours": [1]}})"),
-            kFile + ": axes.colours: is not an axis (accepted: scenes, cells, modes, balance, aa, profiles, sizes, grid, "
-                    "primary_only, frame_average)");
+            kFile + ": axes.colours: is not an axis (accepted: scenes, cells, modes, balance, voxel_generation, aa, "
+                    "profiles, sizes, grid, primary_only, frame_average)");
+  EXPECT_EQ(error_of(R"({"axes": {"scenes": ["balls.csg"], "voxel_generation": ["gpu"]}})"),
+            kFile + R"(: axes.voxel_generation[0]: "gpu" is not who generates the voxels (accepted: host or cells))");
   EXPECT_EQ(error_of(R"({"axes": {"scenes": []}})"), kFile + ": axes.scenes: an axis is a list of one value or more");
   EXPECT_EQ(error_of(R"({"axes": {"cells": ["4x4"]}})"), kFile + ": axes.scenes: is required: the scenes to run");
   EXPECT_EQ(error_of(R"({"axes": {}, "extra": 1})"), kFile + ": extra: is not a key of a sweep file (accepted: axes)");
@@ -169,6 +172,11 @@ TEST(SweepSpec, TheBalancingFindingsSweepsParse) {
   ASSERT_EQ(disb.points.size(), 7u);  // 6 schemes, and static frame averaged
   EXPECT_EQ(disb.left_out.frame_average_balanced, 5);
   EXPECT_EQ(disb.points[0].scene.files.size(), 64u);
+  const SweepSpec voxels = capsim::sim::read_sweep_spec(dir + "voxel-generation.json");
+  ASSERT_EQ(voxels.points.size(), 80u);  // 5 lattices x 2 grids x host and cells x 4 machines
+  EXPECT_EQ(voxels.points[0].voxel_generation, capsim::sim::VoxelGeneration::Host);
+  EXPECT_EQ(voxels.points[4].voxel_generation, capsim::sim::VoxelGeneration::Cells);
+  EXPECT_EQ(voxels.points[4].cells, (capsim::sim::CellGrid{4, 4}));
 }
 
 }  // namespace

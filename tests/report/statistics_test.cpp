@@ -18,7 +18,7 @@ namespace {
 
 const RunFacts kFacts{{"balls.csg"}, "capsim simulate balls.csg", 0.5, "0", std::nullopt};
 
-SimulationResult run(int depth, bool on_demand = false) {
+SimulationResult run(int depth, bool on_demand = false, bool cells_generate_voxels = false) {
   PrepareOptions prep;
   prep.width = 48;
   prep.height = 40;
@@ -30,18 +30,25 @@ SimulationResult run(int depth, bool on_demand = false) {
   config.profile = load_cost_profile("cap");
   config.aa = {depth, 0.3};
   if (on_demand) config.balance = {BalanceScheme::Demand, 16};
+  if (cells_generate_voxels) config.voxel_generation = VoxelGeneration::Cells;
   config.completion_cycles = true;  // the page needs them
   return simulate_frame(tracer, config, 2, false);
 }
 
 TEST(Statistics, EveryCellStatisticIsInTheJsonTextAndPage) {
-  for (const auto& [depth, on_demand] : {std::pair{0, false}, std::pair{1, false}, std::pair{0, true}}) {
-    const SimulationResult r = run(depth, on_demand);
+  struct Case {
+    int depth;
+    bool on_demand, cells_generate_voxels;
+  };
+  for (const auto& [depth, on_demand, cells_voxels] :
+       {Case{0, false, false}, Case{1, false, false}, Case{0, true, false}, Case{0, false, true}}) {
+    const SimulationResult r = run(depth, on_demand, cells_voxels);
     const nlohmann::json json = report_json(r);
     const std::string text = format_report(r);
     const std::string page = html_report(r, kFacts);
     for (const auto& s : kCellStatistics) {
-      const bool kept = statistic_kept(s.scope, depth > 0, on_demand ? BalanceScheme::Demand : BalanceScheme::Static);
+      const bool kept =
+          statistic_kept(s.scope, depth > 0, on_demand ? BalanceScheme::Demand : BalanceScheme::Static, cells_voxels);
       for (std::size_t c = 0; c < r.cells.size(); ++c) {
         ASSERT_EQ(json["cells"][c].contains(s.json_key()), kept) << s.name << " depth " << depth << " " << on_demand;
         if (kept) {

@@ -176,7 +176,7 @@ CostProfile parse_cost_profile(std::string_view json_text, const std::string& so
   const std::uint64_t hz = p.clock_hz;
 
   // Each payer's section holds its terms of kCostTerms, in microseconds.
-  for (const CostPayer payer : {CostPayer::Cell, CostPayer::Host}) {
+  for (const CostPayer payer : kCostPayers) {
     const char* section = profile_section(payer);
     ObjectReader costs(top.member(section), section, source);
     for (const CostTermInfo& t : kCostTerms)
@@ -275,12 +275,13 @@ std::optional<CostBreakdown> WideBreakdown::narrow() const {
   return b;
 }
 
-CostBreakdown voxel_generation_cost(const VoxelGenCounts& n, const CostTable& c) {
+CostBreakdown voxel_generation_cost(const VoxelGenCounts& n, const CostTable& c, CostPayer payer) {
+  if (payer == CostPayer::Cell) throw std::logic_error("a cell's tracing is not voxel generation");
   CostBreakdown b;
   b[CostCategory::VoxelGeneration] = category_cycles(CostCategory::VoxelGeneration, [&] {
     Cycles sum;
     for (const CostTermInfo& t : kCostTerms)
-      if (t.payer == CostPayer::Host) sum += times(t.host_count(n), t, c[t.term]);
+      if (t.payer == payer) sum += times(t.voxel_count(n), t, c[t.term]);
     return sum;
   });
   return b;

@@ -138,9 +138,11 @@ struct WideBreakdown {
 };
 WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTable& costs);
 
-// The host's cycles for Algorithm-3: each host term's count times its cost
-// (all in CostCategory::VoxelGeneration). Throws CycleOverflow as pixel_cost
-// does.
-CostBreakdown voxel_generation_cost(const VoxelGenCounts& counts, const CostTable& costs);
+// The cycles of Algorithm-3's operations `counts` for the host (the whole
+// grid) or for a cell (its share, payer CellVoxels): each of the payer's terms'
+// count times its cost (all in CostCategory::VoxelGeneration). Throws
+// CycleOverflow as pixel_cost does.
+CostBreakdown voxel_generation_cost(const VoxelGenCounts& counts, const CostTable& costs,
+                                    CostPayer payer = CostPayer::Host);
 
 }  // namespace capsim::sim

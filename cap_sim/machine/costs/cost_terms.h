@@ -33,16 +33,19 @@ inline constexpr std::array<CostCategoryInfo, kCostCategories> kCostCategoryTabl
 const char* to_string(CostCategory c);  // kCostCategoryTable's name
 const char* json_key(CostCategory c);   // kCostCategoryTable's json_key
 
-// Who pays a term: a cell for the pixels it traces, or the host for the voxel
-// grid (Algorithm-3, "done on the host today", §5).
-enum class CostPayer { Cell, Host };
+// Who pays a term: a cell for the pixels it traces, the host for the voxel
+// grid (Algorithm-3, "done on the host today", §5), or a cell for its share of
+// the voxel grid when the cells generate it (--voxel-generation cells,
+// machine/parts/voxel_shares.h): the host's operations at a cell's speed.
+enum class CostPayer { Cell, Host, CellVoxels };
 
 enum class CostTerm {
   SphereTest, ConeTest, BoxTest, MeshTest, MeshNodeTest, TriangleTest, RevolutionTest, RevolutionEdgeTest, QuarticTest, DdaSetup, DdaStep, VoxelVisit, Matvec, VoxelPass, TreeVisit, HitSort,
   ShadingEval, RayOther, AaSquare, PixelWrite,
   HostPrimitive, HostMatmat, HostMatvec, HostColumn, HostEntry, HostGridVoxel,
+  CellPrimitive, CellMatmat, CellMatvec, CellColumn, CellEntry, CellGridVoxel,
 };
-inline constexpr int kCostTermCount = 26;
+inline constexpr int kCostTermCount = 32;
 
 // Where the shipped profiles' value of a term comes from.
 enum class CostSource {
@@ -62,8 +65,9 @@ struct CostTermInfo {
   // How many a cell's work holds (payer Cell): from the tracer's counts and
   // the pixels written. Throws CycleOverflow if the count exceeds 64 bits.
   std::uint64_t (*cell_count)(const OpCounts& ops, std::uint64_t pixels);
-  // How many the host's voxel generation holds (payer Host).
-  std::uint64_t (*host_count)(const VoxelGenCounts& counts);
+  // How many a voxel generation holds (payer Host or CellVoxels): the host's
+  // whole grid, or a cell's share of it.
+  std::uint64_t (*voxel_count)(const VoxelGenCounts& counts);
 };
 
 // The voxels a ray's 3DDDA visited: the set-up's first voxel and one per step.
@@ -137,13 +141,33 @@ inline constexpr std::array<CostTermInfo, kCostTermCount> kCostTerms = {{
     // The grid itself: every voxel set up and given its (possibly empty) list.
     {CostTerm::HostGridVoxel, CostPayer::Host, "grid_voxel", CostCategory::VoxelGeneration, "grid voxels",
      "voxel", CostSource::Fitted, nullptr, [](const VoxelGenCounts& n) { return n.grid_voxels; }},
+    // The same operations on a cell (docs/calibration.md): the products at
+    // Table 4-1's CAP costs, the fitted host costs times the cell's slowness.
+    {CostTerm::CellPrimitive, CostPayer::CellVoxels, "primitive", CostCategory::VoxelGeneration, "primitives",
+     "primitive", CostSource::Reasoned, nullptr, [](const VoxelGenCounts& n) { return n.primitives; }},
+    {CostTerm::CellMatmat, CostPayer::CellVoxels, "matmat", CostCategory::VoxelGeneration, "matrix-matrix products",
+     "product", CostSource::Table41, nullptr, [](const VoxelGenCounts& n) { return n.matmat; }},
+    {CostTerm::CellMatvec, CostPayer::CellVoxels, "matvec", CostCategory::VoxelGeneration, "matrix-vector products",
+     "product", CostSource::Table41, nullptr, [](const VoxelGenCounts& n) { return n.matvec; }},
+    {CostTerm::CellColumn, CostPayer::CellVoxels, "voxel_column", CostCategory::VoxelGeneration, "voxel columns",
+     "column", CostSource::Reasoned, nullptr, [](const VoxelGenCounts& n) { return n.columns; }},
+    {CostTerm::CellEntry, CostPayer::CellVoxels, "voxel_entry", CostCategory::VoxelGeneration, "voxel entries",
+     "entry", CostSource::Reasoned, nullptr, [](const VoxelGenCounts& n) { return n.voxel_entries; }},
+    {CostTerm::CellGridVoxel, CostPayer::CellVoxels, "grid_voxel", CostCategory::VoxelGeneration, "grid voxels",
+     "voxel", CostSource::Reasoned, nullptr, [](const VoxelGenCounts& n) { return n.grid_voxels; }},
 }};
 
 const CostTermInfo& info(CostTerm t);
 // "cell_costs_us.sphere_test": the term's path in a profile file.
 std::string profile_key(CostTerm t);
-// "cell_costs_us" or "host_costs_us": the profile section of a payer's terms.
+// "cell_costs_us", "host_costs_us" or "cell_voxel_costs_us": the profile
+// section of a payer's terms.
 const char* profile_section(CostPayer p);
+inline constexpr CostPayer kCostPayers[] = {CostPayer::Cell, CostPayer::Host, CostPayer::CellVoxels};
+
+// The cells' term for the same operation as a host term (its key in the
+// cells' voxel section). Precondition: t is paid by the host.
+CostTerm cell_voxel_twin(CostTerm host_term);
 
 // A value for each term.
 template <class T>

@@ -37,6 +37,7 @@ Process Cell::run() {
   for (std::size_t u = 0; u < wire_.units.size(); ++u) {
     const DistributionUnit& unit = wire_.units[u];
     co_await receive(u);
+    if (wire_.generate_voxels) co_await generate_voxel_shares(unit);
     if (wire_.on_demand) {
       co_await trace_tiles(unit);
     } else if (wire_.chunk_pixels > 0) {
@@ -57,7 +58,7 @@ Process Cell::run() {
 Task<> Cell::receive(std::size_t u) {
   const DistributionUnit& unit = wire_.units[u];
   Cycles waiting_since = clock_.now();
-  for (const Broadcast expected : unit_broadcasts(u == 0, unit.first_frame, unit.frames)) {
+  for (const Broadcast expected : unit_broadcasts(u == 0, unit.first_frame, unit.frames, !wire_.generate_voxels)) {
     const BusTransfer t = co_await bus_inbox_.receive();
     clock_.wait("wait for host", waiting_since, t.granted);
     take_in(t, expected.message);

@@ -45,13 +45,16 @@ class Cell {
     // thief reads the chunks it took from.
     int chunk_pixels = 0;
     std::function<const TracedCell&(CellId, int)> video_of;
+    // The cells generate the voxel grids (voxel_shares.h): each unit begins
+    // with this cell's share of each frame's grid (frames[f].voxel_shares).
+    bool generate_voxels = false;
   };
 
   // Takes this cell's traced work out of every frame of wiring.frames.
   Cell(CellId id, int timeline_track, const Wiring& wiring);
 
   // The program every cell runs (§3.3), for each distribution unit of the run
-  // in turn: receive, trace, report done; antialiased: receive, trace
+  // in turn: receive, (generate its voxel shares,) trace, report done; antialiased: receive, trace
   // corners, exchange corners, subdivide, report done; balanced on demand:
   // receive, trace tiles as granted, report done. Precondition: the host
   // broadcasts what unit_broadcasts() lists and collects a "done" from every
@@ -74,6 +77,12 @@ class Cell {
   // The phases of run(), each for one distribution unit (receive: by its
   // index, the first unit's broadcasts beginning with the program).
   Task<> receive(std::size_t u);
+  // Voxel generation on the cells: for each frame, place its primitives,
+  // broadcast their entries, gather the others'; build its voxels' lists,
+  // broadcast them, gather the others' (cell_voxel_share.cpp).
+  Task<> generate_voxel_shares(const DistributionUnit& unit);
+  Task<> broadcast_share(BusMessage message, int frame, std::uint64_t bytes);
+  Task<> gather_shares(BusMessage message, int frame);
   Task<> trace(const DistributionUnit& unit);
   Task<> trace_corners(const DistributionUnit& unit);
   Task<> exchange_corners(const CornerExchange& exchange);
@@ -128,6 +137,7 @@ class Cell {
   Mailbox<BusTransfer> bus_inbox_;
   Mailbox<LinkMessage> link_inbox_;
   std::vector<LinkMessage> early_;  // horizontal messages that came before the vertical ones
+  std::vector<BusTransfer> early_shares_;  // other cells' voxel shares of a later step or frame
   std::vector<CornerIndex> unit_received_;  // corners taken in during this unit's exchange
   std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced (static)
   Cycles last_request_;  // on demand: when its latest request left

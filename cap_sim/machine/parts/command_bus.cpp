@@ -18,7 +18,7 @@ Cycles CommandBus::transfer_cycles(std::uint64_t bytes) const {
 }
 
 CommandBus::TransferAwaiter CommandBus::transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes,
-                                                 BusMessage message, int tile) {
+                                                 BusMessage message, int tile, int frame) {
   if (sender == kAllCells || sender == receiver)
     throw std::logic_error("bus transfer needs a sender and a different receiver");
   BusTransfer t;
@@ -27,6 +27,7 @@ CommandBus::TransferAwaiter CommandBus::transfer(Endpoint sender, Endpoint recei
   t.receiver = receiver;
   t.bytes = bytes;
   t.tile = tile;
+  t.frame = frame;
   return TransferAwaiter{*this, std::move(t)};
 }
 

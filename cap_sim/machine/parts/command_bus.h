@@ -23,7 +23,8 @@
 
 namespace capsim::sim {
 
-// Who sends or receives on the bus: a cell id (>= 0), the host, or every cell.
+// Who sends or receives on the bus: a cell id (>= 0), the host, or every cell
+// (a cell's broadcast reaches every other cell).
 using Endpoint = int;
 inline constexpr Endpoint kHost = -1;
 inline constexpr Endpoint kAllCells = -2;
@@ -34,6 +35,7 @@ struct BusTransfer {
   Endpoint receiver = kAllCells;
   std::uint64_t bytes = 0;
   int tile = -1;     // a grant: the tile it hands out (balance.h)
+  int frame = -1;    // voxel entries or rows: the run's frame whose grid they build
   Cycles requested;  // the sender asked for the bus
   Cycles granted;    // the bus was granted (arbitration starts)
   Cycles released;   // the last byte left the bus; the bus is free again
@@ -61,7 +63,7 @@ class CommandBus {
     BusTransfer await_resume() { return std::move(transfer); }
   };
   TransferAwaiter transfer(Endpoint sender, Endpoint receiver, std::uint64_t bytes, BusMessage message,
-                           int tile = -1);
+                           int tile = -1, int frame = -1);
 
   // Every completed transfer, in delivery order.
   const std::vector<BusTransfer>& log() const { return log_; }

@@ -8,6 +8,10 @@
 //   host -> all cells  scene       primitives, status tree, camera, lights  } each
 //   host -> all cells  voxel data  the voxel grid                           } frame
 //   host -> all cells  start       the start command (kStartCommandBytes)
+// With voxel generation on the cells (voxel_shares.h) the host sends no voxel
+// data (the scene carries the grid's header); after start, for each frame:
+//   cell -> all cells  voxel entries  the entries of the primitives it placed
+//   cell -> all cells  voxel rows     the lists of the voxels it owns
 //   cell -> host       done        the cell has every pixel of the unit in video
 //                                  memory (kDoneMessageBytes: the cell's id)
 // Balanced on demand (balance.h), between start and done, any number of times:
@@ -26,7 +30,9 @@
 
 namespace capsim::sim {
 
-enum class BusMessage : std::uint8_t { Program, Scene, VoxelData, Start, Done, Request, Grant, NoTile };
+enum class BusMessage : std::uint8_t {
+  Program, Scene, VoxelData, Start, Done, Request, Grant, NoTile, VoxelEntries, VoxelRows
+};
 
 // The one table of bus messages: each value and its name as the timeline and
 // the reports print it ("broadcast voxel data", "done (cell[0,3])"), in the
@@ -38,7 +44,8 @@ struct BusMessageName {
 inline constexpr BusMessageName kBusMessages[] = {
     {BusMessage::Program, "program"}, {BusMessage::Scene, "scene"}, {BusMessage::VoxelData, "voxel data"},
     {BusMessage::Start, "start"},     {BusMessage::Done, "done"},           {BusMessage::Request, "request"},
-    {BusMessage::Grant, "grant"},     {BusMessage::NoTile, "no tile"},
+    {BusMessage::Grant, "grant"},     {BusMessage::NoTile, "no tile"},      {BusMessage::VoxelEntries, "voxel entries"},
+    {BusMessage::VoxelRows, "voxel rows"},
 };
 
 constexpr std::string_view to_string(BusMessage m) { return kBusMessages[static_cast<std::size_t>(m)].name; }
@@ -52,10 +59,11 @@ struct Broadcast {
   bool operator==(const Broadcast&) const = default;
 };
 
-// The broadcasts every cell receives before it starts the unit of `frames`
-// frames from first_frame, in order: the program (before the first unit
-// only), each frame's scene and voxel data, the start command.
-std::vector<Broadcast> unit_broadcasts(bool first_unit, int first_frame, int frames);
+// The broadcasts every cell receives from the host before it starts the unit
+// of `frames` frames from first_frame, in order: the program (before the first
+// unit only), each frame's scene and (when the host generates the grids) voxel
+// data, the start command.
+std::vector<Broadcast> unit_broadcasts(bool first_unit, int first_frame, int frames, bool host_voxels = true);
 
 inline constexpr std::uint64_t kStartCommandBytes = 4;  // one command word
 inline constexpr std::uint64_t kDoneMessageBytes = 4;   // the sender's cell id

@@ -21,7 +21,7 @@ Process Host::run() {
   for (std::size_t u = 0; u < wire_.units.size(); ++u) {
     if (wire_.unit_begins) wire_.unit_begins(u);
     unit_start_.push_back(clock_.now());
-    co_await generate_voxels(wire_.units[u]);
+    if (!wire_.cells_generate_voxels) co_await generate_voxels(wire_.units[u]);
     co_await broadcast(u);
     if (wire_.on_demand)
       co_await hand_out_tiles(wire_.units[u]);
@@ -46,7 +46,7 @@ Task<> Host::generate_voxels(const DistributionUnit& unit) {
 // cell.
 Task<> Host::broadcast(std::size_t u) {
   const DistributionUnit& unit = wire_.units[u];
-  for (const Broadcast b : unit_broadcasts(u == 0, unit.first_frame, unit.frames)) {
+  for (const Broadcast b : unit_broadcasts(u == 0, unit.first_frame, unit.frames, !wire_.cells_generate_voxels)) {
     const BusTransfer t = co_await wire_.bus.transfer(kHost, kAllCells, bytes_of(b), b.message);
     clock_.span(fmt::format("broadcast {}", to_string(b.message)), SpanCategory::Broadcast, t.granted, t.delivered,
                 t.bytes);
@@ -101,13 +101,16 @@ Task<> Host::hand_out_tiles(const DistributionUnit& unit) {
 std::uint64_t Host::bytes_of(const Broadcast& b) const {
   switch (b.message) {
     case BusMessage::Program: return program_bytes_;
-    case BusMessage::Scene: return wire_.frames[b.frame].footprint.scene_bytes();
+    case BusMessage::Scene:
+      return wire_.frames[b.frame].footprint.scene_bytes() + (wire_.cells_generate_voxels ? kCellGridHeaderBytes : 0);
     case BusMessage::VoxelData: return wire_.frames[b.frame].footprint.voxel_bytes();
     case BusMessage::Start: return kStartCommandBytes;
     case BusMessage::Done:
     case BusMessage::Request:
     case BusMessage::Grant:
-    case BusMessage::NoTile: break;
+    case BusMessage::NoTile:
+    case BusMessage::VoxelEntries:
+    case BusMessage::VoxelRows: break;
   }
   throw std::logic_error(fmt::format("the host does not broadcast \"{}\"", to_string(b.message)));
 }

@@ -37,6 +37,9 @@ class Host {
     // Balanced on demand: each frame's tiles (frames[f].layout's windows) are
     // handed out to the cells that ask (balance.h).
     bool on_demand = false;
+    // The cells generate the voxel grids (voxel_shares.h): the host sends no
+    // voxel data, and each scene carries the grid's header.
+    bool cells_generate_voxels = false;
   };
 
   // The balancing traffic it handled, all units (on demand).
@@ -62,7 +65,8 @@ class Host {
   const Balancing& balancing() const { return balancing_; }
 
  private:
-  // The phases of run(), each for one unit.
+  // The phases of run(), each for one unit (generate_voxels only when the
+  // host generates the grids).
   Task<> generate_voxels(const DistributionUnit& unit);
   Task<> broadcast(std::size_t unit);
   Task<> collect_done();
