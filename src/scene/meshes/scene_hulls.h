@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace capsim::scene_file {
 
@@ -26,10 +27,20 @@ struct FileAccess {
 // evaluating CSG (difference, intersection) or that is 2-D.
 Primitive read_hull(const Call& call, const FileAccess& files);
 
-// minkowski(): the Minkowski sum of convex children, which is the convex
-// hull of the sums of their points (exact for convex meshes). A child that is
-// not convex as written (a union of several solids, a non-convex polyhedron,
-// import or surface) is refused: its sum needs a convex decomposition.
-Primitive read_minkowski(const Call& call, const FileAccess& files);
+// minkowski(): the Minkowski sum of its children, as OpenSCAD makes it. The
+// sum distributes over union, so each child is taken as convex parts (each
+// solid of a union; a non-convex polyhedron, import or surface split into
+// convex pieces by CGAL, scene/meshes/convex_decomposition.h) and the sum is
+// the union of the hulls of the point sums of every choice of one part per
+// child: one convex mesh leaf each (exact for the children's meshes).
+// Refused: a child whose points are not known without evaluating CSG
+// (difference, intersection), a non-convex mesh that is not a 2-manifold or
+// has more than kMaxDecomposedTriangles triangles, more than
+// kMaxMinkowskiParts parts, and more than kMaxTessellatedPoints point sums at
+// one child.
+std::vector<Primitive> read_minkowski(const Call& call, const FileAccess& files);
+// Each part is one leaf to trace: a union of thousands already costs more
+// than OpenSCAD's own render of it would.
+inline constexpr std::size_t kMaxMinkowskiParts = 10000;
 
 }  // namespace capsim::scene_file

@@ -38,21 +38,16 @@ class SolidReader {
     }
     if (n == "import") {
       no_children(call);
-      CsgNode node;  // the union of the file's objects
-      node.op = CsgOp::Union;
-      node.loc = call.loc;
-      for (const Primitive& p : read_import(call, files_.import_dir, files_.max_bytes))
-        node.children.push_back(leaf(*p.mesh, m * p.to_world, call));
-      return node;
+      return union_of(read_import(call, files_.import_dir, files_.max_bytes), m, call);  // the file's objects
     }
-    if (n == "polyhedron" || n == "surface" || n == "hull" || n == "minkowski") {
-      if (n != "hull" && n != "minkowski") no_children(call);
+    if (n == "polyhedron" || n == "surface" || n == "hull") {
+      if (n != "hull") no_children(call);
       const Primitive p = n == "polyhedron" ? read_polyhedron(call)
                           : n == "surface"  ? read_surface(call, files_.import_dir, files_.max_bytes)
-                          : n == "hull"     ? read_hull(call, files_)
-                                            : read_minkowski(call, files_);
+                                            : read_hull(call, files_);
       return leaf(*p.mesh, m * p.to_world, call);
     }
+    if (n == "minkowski") return union_of(read_minkowski(call, files_), m, call);  // its convex parts
     if (n == "linear_extrude") return extrusion(call, m);
     if (n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror") {
       return group(call, m * read_transform(call), CsgOp::Union);
@@ -99,6 +94,15 @@ class SolidReader {
     node.is_leaf = true;
     node.primitive = static_cast<int>(meshes.size()) - 1;
     node.loc = call.loc;
+    return node;
+  }
+
+  // The union of mesh primitives' leaves.
+  CsgNode union_of(const std::vector<Primitive>& meshes, const glm::dmat4& m, const Call& call) {
+    CsgNode node;
+    node.op = CsgOp::Union;
+    node.loc = call.loc;
+    for (const Primitive& p : meshes) node.children.push_back(leaf(*p.mesh, m * p.to_world, call));
     return node;
   }
 
