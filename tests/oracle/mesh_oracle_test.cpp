@@ -271,9 +271,10 @@ TEST(MeshOracle, RevolutionsAgreeWithOpenScadsStl) {
 }
 
 // minkowski() of a union (the sum of each solid), of a non-convex
-// polyhedron (CGAL's convex pieces of it, summed each) and of two unions, one
-// of them a transform's implicit union (a sum for each pair of solids).
-TEST(MeshOracle, MinkowskiSumsOfUnionsAndNonConvexMeshesAgreeWithOpenScadsStl) {
+// polyhedron (CGAL's convex pieces of it, summed each), of two unions, one
+// of them a transform's implicit union (a sum for each pair of solids), of a
+// twisted extrusion of a region with a hole and of a straight one of an L.
+TEST(MeshOracle, MinkowskiSumsOfUnionsNonConvexMeshesAndExtrusionsAgreeWithOpenScadsStl) {
   if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
   TempDir dir;
   const std::string scad = dir / "minkowski.scad";
@@ -288,6 +289,15 @@ TEST(MeshOracle, MinkowskiSumsOfUnionsAndNonConvexMeshesAgreeWithOpenScadsStl) {
                          "translate([16, 14, 0]) minkowski() {\n"
                          "  translate([0, 0, 0]) { cube(2); translate([0, 5, 0]) cube(2); }\n"
                          "  union() { rotate([0, 0, 45]) cube(1, center = true); translate([3, 0, 0]) sphere(0.5); }\n"
+                         "}\n"
+                         "translate([0, 30, 0]) minkowski() {\n"
+                         "  linear_extrude(height = 3, twist = 40, slices = 3)\n"
+                         "    difference() { square(10); translate([3, 3]) square(4); }\n"
+                         "  rotate([0, 0, 45]) cube(1, center = true);\n"
+                         "}\n"
+                         "translate([16, 30, 0]) minkowski() {\n"
+                         "  linear_extrude(height = 2) polygon([[0, 0], [6, 0], [6, 2], [2, 2], [2, 6], [0, 6]]);\n"
+                         "  cylinder(r = 1, h = 1);\n"
                          "}\n";
   // 24 fragments: OpenSCAD unites the sums' Nef polyhedra, slow at 96.
   expect_agreement(scad, "minkowski", dir, "-D '$fn=24'");

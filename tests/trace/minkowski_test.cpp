@@ -162,6 +162,42 @@ TEST(MinkowskiNonConvex, AnImportedMeshIsSummedPieceByPiece) {
   expect_same_image(imported, parse_scene(kLOfSide3, "t.csg"), 1e-9);
 }
 
+// A linear_extrude of a non-convex polygon is split as a mesh is.
+TEST(MinkowskiNonConvex, AnExtrudedLIsSummedPieceByPiece) {
+  expect_same_image("minkowski() {\n"
+                    "  linear_extrude(height = 1) polygon([[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]);\n"
+                    "  cube(1);\n"
+                    "}",
+                    kLOfSide3, 1e-9);
+}
+
+// A region with a hole: the frame's outline less the hole, split by CGAL.
+// Summed with a unit cube, the frame grows by one outwards and upwards and
+// its hole shrinks by one from two sides.
+TEST(MinkowskiNonConvex, AnExtrudedFrameKeepsItsHole) {
+  expect_same_image("minkowski() {\n"
+                    "  linear_extrude(height = 2, center = true) difference() { square(10); translate([3, 3, 0]) square(4); }\n"
+                    "  cube(1);\n"
+                    "}",
+                    "translate([0, 0, -1]) linear_extrude(height = 3) difference() {\n"
+                    "  square(11);\n"
+                    "  translate([4, 4, 0]) square(3);\n"
+                    "}",
+                    1e-9);
+}
+
+// hull() takes an extrusion's outline points: the L's hull is a pentagon.
+TEST(MinkowskiNonConvex, HullOfAnExtrusionIsItsOutlinesHull) {
+  const Scene s = parse_scene(
+      "hull() linear_extrude(height = 2, center = true) polygon([[0, 0], [4, 0], [4, 1], [1, 1], [1, 4], [0, 4]]);",
+      "t.csg");
+  ASSERT_EQ(s.primitives.size(), 1u);
+  const TriangleMesh& m = *s.primitives[0].mesh;
+  EXPECT_EQ(m.vertices.size(), 10u);  // the pentagon's corners, at both caps
+  EXPECT_EQ(m.bounds.lo, glm::dvec3(0, 0, -1));
+  EXPECT_EQ(m.bounds.hi, glm::dvec3(4, 4, 1));
+}
+
 TEST(MinkowskiNonConvex, HullStillTakesEveryPointAlike) {
   const Scene s = parse_scene(fmt::format("hull() {}", kLPrism), "t.csg");
   ASSERT_EQ(s.primitives.size(), 1u);
@@ -187,6 +223,8 @@ TEST(MinkowskiRefusals, NameTheChildConcerned) {
   EXPECT_EQ(refusal("minkowski() {\n  sphere(1);\n  intersection() { cube(2); sphere(1); }\n}").substr(0, 47),
             "t.csg:3:3: intersection() under hull() or minko");
   EXPECT_EQ(refusal("minkowski() { }"), "t.csg:1:1: minkowski() has no solid children: it encloses nothing");
+  EXPECT_EQ(refusal("minkowski() {\n  cube(1);\n  rotate_extrude() translate([2, 0]) circle(1);\n}").substr(0, 52),
+            "t.csg:3:3: rotate_extrude() under hull() or minkowsk");
   // Two tetrahedra meeting at one corner: closed, but not a 2-manifold.
   EXPECT_EQ(refusal("minkowski() {\n  cube(1);\n  polyhedron(points = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], "
                     "[-1, 0, 0], [0, -1, 0], [0, 0, -1]], faces = [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3], "

@@ -33,9 +33,8 @@ struct ShellCorners {
   void visit(Nef::SFace_const_handle) const {}
 };
 
-}  // namespace
-
-ConvexPieces convex_pieces(const TriangleMesh& mesh) {
+// The Nef polyhedron a mesh bounds, or empty with why CGAL cannot have it.
+std::optional<Nef> nef_of(const TriangleMesh& mesh, std::string& reason) {
   std::vector<Kernel::Point_3> points;
   points.reserve(mesh.vertices.size());
   for (const glm::dvec3& v : mesh.vertices) points.emplace_back(v.x, v.y, v.z);
@@ -43,28 +42,43 @@ ConvexPieces convex_pieces(const TriangleMesh& mesh) {
   faces.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) faces.push_back({t[0], t[1], t[2]});
   namespace PMP = CGAL::Polygon_mesh_processing;
-  ConvexPieces pieces;
   if (!PMP::is_polygon_soup_a_polygon_mesh(faces)) {
-    pieces.reason = "its faces meet at an edge or corner shared by more than one sheet of surface (not a 2-manifold)";
-    return pieces;
+    reason = "its faces meet at an edge or corner shared by more than one sheet of surface (not a 2-manifold)";
+    return std::nullopt;
   }
   Mesh surface;
   PMP::polygon_soup_to_polygon_mesh(points, faces, surface);
   // A Nef polyhedron of a surface that crosses itself is undefined.
   if (PMP::does_self_intersect(surface)) {
-    pieces.reason = "its surface crosses itself";
-    return pieces;
+    reason = "its surface crosses itself";
+    return std::nullopt;
   }
+  return Nef(surface);
+}
+
+}  // namespace
+
+ConvexPieces convex_pieces(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>& holes) {
+  ConvexPieces pieces;
   try {
-    Nef nef(surface);
-    CGAL::convex_decomposition_3(nef);
+    std::optional<Nef> nef = nef_of(mesh, pieces.reason);
+    for (const TriangleMesh* hole : holes) {
+      if (!nef) break;
+      if (std::optional<Nef> cut = nef_of(*hole, pieces.reason)) {
+        *nef -= *cut;
+      } else {
+        nef.reset();
+      }
+    }
+    if (!nef) return pieces;
+    CGAL::convex_decomposition_3(*nef);
     std::vector<std::vector<glm::dvec3>> corners;
     // The first volume is the unbounded outside; the marked ones after it
     // are the solid's convex pieces, each bounded by one shell.
-    for (auto volume = ++nef.volumes_begin(); volume != nef.volumes_end(); ++volume) {
+    for (auto volume = ++nef->volumes_begin(); volume != nef->volumes_end(); ++volume) {
       if (!volume->mark()) continue;
       ShellCorners visitor{&corners.emplace_back()};
-      nef.visit_shell_objects(Nef::SFace_const_handle(volume->shells_begin()), visitor);
+      nef->visit_shell_objects(Nef::SFace_const_handle(volume->shells_begin()), visitor);
     }
     pieces.corners = std::move(corners);
   } catch (const CGAL::Failure_exception& e) {

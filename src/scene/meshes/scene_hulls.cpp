@@ -4,6 +4,7 @@
 
 #include "scene/meshes/convex_decomposition.h"
 #include "scene/meshes/convex_hull.h"
+#include "scene/extrusions/extruded_region.h"
 #include "scene/extrusions/openscad_tessellation.h"
 #include "scene/reading/scene_args.h"
 #include "scene/meshes/scene_meshes.h"
@@ -67,21 +68,29 @@ bool is_convex(const TriangleMesh& mesh) {
   return true;
 }
 
-// A mesh's points as one part, or, when `split` and the mesh is not convex,
-// as its convex pieces.
-void add_mesh(const Primitive& p, const glm::dmat4& m, bool split, const Call& call, Parts& out) {
-  const glm::dmat4 placed = m * p.to_world;
-  if (!split || is_convex(*p.mesh)) return add_part(p.mesh->vertices, placed, out);
-  if (p.mesh->triangles.size() > kMaxDecomposedTriangles)
-    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex mesh is not supported: it has {} "
+// The solid a mesh bounds, less those of `holes` (inside it), placed by m:
+// its points as one part (the holes' lie within), or, when `split` and the
+// solid is not convex, its convex pieces. `what` names it in a refusal.
+void add_solid(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>& holes, const glm::dmat4& m,
+               bool split, const Call& call, std::string_view what, Parts& out) {
+  if (!split || (holes.empty() && is_convex(mesh))) return add_part(mesh.vertices, m, out);
+  std::size_t triangles = mesh.triangles.size();
+  for (const TriangleMesh* hole : holes) triangles += hole->triangles.size();
+  if (triangles > kMaxDecomposedTriangles)
+    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex {} is not supported: it has {} "
                                            "triangles, more than the {} capsim splits into convex pieces",
-                                           p.mesh->triangles.size(), kMaxDecomposedTriangles));
-  ConvexPieces pieces = convex_pieces(*p.mesh);
+                                           what, triangles, kMaxDecomposedTriangles));
+  ConvexPieces pieces = convex_pieces(mesh, holes);
   if (!pieces.corners)
-    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex mesh is not supported: {}; capsim "
-                                           "sums its convex pieces, which only a 2-manifold has",
-                                           pieces.reason));
-  for (const auto& piece : *pieces.corners) add_part(piece, placed, out);
+    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex {} is not supported: {}; capsim "
+                                           "sums its convex pieces, which CGAL finds only for a 2-manifold that "
+                                           "does not cross itself",
+                                           what, pieces.reason));
+  for (const auto& piece : *pieces.corners) add_part(piece, m, out);
+}
+
+void add_mesh(const Primitive& p, const glm::dmat4& m, bool split, const Call& call, Parts& out) {
+  add_solid(*p.mesh, {}, m * p.to_world, split, call, "mesh", out);
 }
 
 std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAccess& files);
@@ -106,6 +115,17 @@ class PointCollector {
       no_children(call);
       add_mesh(n == "polyhedron" ? read_polyhedron(call) : read_surface(call, files_.import_dir, files_.max_bytes),
                m, split_, call, out);
+    } else if (n == "linear_extrude") {
+      // Each outline less the holes directly in it, as projection() reads it.
+      const ExtrudedRegion region =
+          extruded_region(call, {files_.import_dir, files_.max_bytes}, "hull() or minkowski()");
+      for (std::size_t k = 0; k < region.meshes.size(); ++k) {
+        if (!region.outline(k)) continue;
+        std::vector<const TriangleMesh*> holes;
+        for (std::size_t h = 0; h < region.meshes.size(); ++h)
+          if (region.parent[h] == static_cast<int>(k)) holes.push_back(&region.meshes[h]);
+        add_solid(region.meshes[k], holes, m * region.to_call, split_, call, "extrusion", out);
+      }
     } else if (n == "hull") {
       read_hull_arguments(call);
       PointCollector points(files_, false);
@@ -134,8 +154,8 @@ class PointCollector {
                                              n));
     } else {
       throw SceneError(call.loc, fmt::format("{}() under hull() or minkowski() is not supported: capsim takes the "
-                                             "points of sphere, cube, cylinder, polyhedron, import, surface, hull and "
-                                             "minkowski, under transforms, union, color and render",
+                                             "points of sphere, cube, cylinder, polyhedron, import, surface, hull, "
+                                             "minkowski and linear_extrude, under transforms, union, color and render",
                                              n));
     }
   }
