@@ -20,17 +20,20 @@ namespace capsim::scene_file {
 
 namespace {
 
+std::size_t point_count(const std::vector<std::vector<glm::dvec3>>& parts) {
+  std::size_t n = 0;
+  for (const auto& part : parts) n += part.size();
+  return n;
+}
+
 // The points of one subtree as the convex parts whose union it is, each
 // given by points whose hull it is: a primitive, a hull, each part of a
-// minkowski, a convex mesh, each convex piece of a non-convex mesh (only
-// when the parts are to be summed: a hull takes every point alike).
+// minkowski, a convex mesh or extrusion outline, each convex piece of a
+// non-convex one (only when the parts are to be summed: a hull takes every
+// point alike).
 struct Parts {
   std::vector<std::vector<glm::dvec3>> convex;
-  std::size_t points() const {
-    std::size_t n = 0;
-    for (const auto& part : convex) n += part.size();
-    return n;
-  }
+  std::size_t points() const { return point_count(convex); }
   std::vector<glm::dvec3> all_points() const {
     std::vector<glm::dvec3> all;
     all.reserve(points());
@@ -204,7 +207,7 @@ std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAc
       throw SceneError(child.loc, fmt::format("minkowski() would sum {} convex parts by {}, more than the {} parts "
                                               "capsim makes of one minkowski",
                                               sums.size(), parts.convex.size(), kMaxMinkowskiParts));
-    const std::size_t so_far = Parts{sums}.points();
+    const std::size_t so_far = point_count(sums);
     const double pairs = static_cast<double>(so_far) * static_cast<double>(parts.points());
     if (pairs > static_cast<double>(kMaxTessellatedPoints))
       throw SceneError(child.loc, fmt::format("minkowski() would sum {} by {} points, more than the {} capsim takes "
