@@ -270,4 +270,37 @@ TEST(MeshOracle, RevolutionsAgreeWithOpenScadsStl) {
   expect_agreement(scad, "revolutions", dir);
 }
 
+// minkowski() of a union (the sum of each solid), of a non-convex
+// polyhedron (CGAL's convex pieces of it, summed each), of two unions, one
+// of them a transform's implicit union (a sum for each pair of solids), of a
+// twisted extrusion of a region with a hole and of a straight one of an L.
+TEST(MeshOracle, MinkowskiSumsOfUnionsNonConvexMeshesAndExtrusionsAgreeWithOpenScadsStl) {
+  if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
+  TempDir dir;
+  const std::string scad = dir / "minkowski.scad";
+  std::ofstream(scad) << "minkowski() { union() { cube(4); translate([8, 0, 0]) cube([2, 6, 3]); } sphere(1); }\n"
+                         "translate([0, 14, 0]) minkowski() {\n"
+                         "  polyhedron(points = [[0, 0, 0], [8, 0, 0], [8, 4, 0], [4, 4, 0], [4, 8, 0], [0, 8, 0],\n"
+                         "                       [0, 0, 3], [8, 0, 3], [8, 4, 3], [4, 4, 3], [4, 8, 3], [0, 8, 3]],\n"
+                         "             faces = [[5, 4, 3, 2, 1, 0], [6, 7, 8, 9, 10, 11], [0, 1, 7, 6], [1, 2, 8, 7],\n"
+                         "                      [2, 3, 9, 8], [3, 4, 10, 9], [4, 5, 11, 10], [5, 0, 6, 11]]);\n"
+                         "  cylinder(r = 1, h = 1);\n"
+                         "}\n"
+                         "translate([16, 14, 0]) minkowski() {\n"
+                         "  translate([0, 0, 0]) { cube(2); translate([0, 5, 0]) cube(2); }\n"
+                         "  union() { rotate([0, 0, 45]) cube(1, center = true); translate([3, 0, 0]) sphere(0.5); }\n"
+                         "}\n"
+                         "translate([0, 30, 0]) minkowski() {\n"
+                         "  linear_extrude(height = 3, twist = 40, slices = 3)\n"
+                         "    difference() { square(10); translate([3, 3]) square(4); }\n"
+                         "  rotate([0, 0, 45]) cube(1, center = true);\n"
+                         "}\n"
+                         "translate([16, 30, 0]) minkowski() {\n"
+                         "  linear_extrude(height = 2) polygon([[0, 0], [6, 0], [6, 2], [2, 2], [2, 6], [0, 6]]);\n"
+                         "  cylinder(r = 1, h = 1);\n"
+                         "}\n";
+  // 24 fragments: OpenSCAD unites the sums' Nef polyhedra, slow at 96.
+  expect_agreement(scad, "minkowski", dir, "-D '$fn=24'");
+}
+
 }  // namespace

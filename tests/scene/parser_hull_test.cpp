@@ -92,11 +92,15 @@ TEST(Minkowski, OfABoxAndASphereIsTheirSum) {
   EXPECT_DOUBLE_EQ(m.bounds.lo.x, -1 - side);
 }
 
-TEST(Minkowski, OfANonConvexChildIsRefusedAtIt) {
-  EXPECT_EQ(refusal("minkowski() {\n  sphere(1);\n  union() { cube(1); translate([3, 0, 0]) cube(1); }\n}").substr(0, 73),
-            "t.csg:3:3: minkowski() of this child is not supported: it is not a single");
-  // Its hull is convex.
-  EXPECT_NO_THROW(parse_scene("minkowski() { sphere(1); hull() { cube(1); translate([3, 0, 0]) cube(1); } }", "t.csg"));
+// The sum of a union is the union of its solids' sums (tests/trace/minkowski_test.cpp
+// traces them); the hull of a union is one convex part.
+TEST(Minkowski, OfAUnionIsASumPerSolid) {
+  EXPECT_EQ(parse_scene("minkowski() {\n  sphere(1);\n  union() { cube(1); translate([3, 0, 0]) cube(1); }\n}", "t.csg")
+                .primitives.size(),
+            2u);
+  EXPECT_EQ(parse_scene("minkowski() { sphere(1); hull() { cube(1); translate([3, 0, 0]) cube(1); } }", "t.csg")
+                .primitives.size(),
+            1u);
 }
 
 TEST(Surface, ADatFileGivesOpenScadsMesh) {

@@ -2,7 +2,9 @@
 
 #include "scene/meshes/scene_hulls.h"
 
+#include "scene/meshes/convex_decomposition.h"
 #include "scene/meshes/convex_hull.h"
+#include "scene/extrusions/extruded_region.h"
 #include "scene/extrusions/openscad_tessellation.h"
 #include "scene/reading/scene_args.h"
 #include "scene/meshes/scene_meshes.h"
@@ -18,12 +20,26 @@ namespace capsim::scene_file {
 
 namespace {
 
-// The points of one subtree, and whether they are a convex solid's corners
-// (a lone convex solid: a primitive, a hull, a minkowski, a convex mesh).
-struct Points {
-  std::vector<glm::dvec3> at;
-  bool convex = true;
-  int solids = 0;  // solids met, for the convexity of a union
+std::size_t point_count(const std::vector<std::vector<glm::dvec3>>& parts) {
+  std::size_t n = 0;
+  for (const auto& part : parts) n += part.size();
+  return n;
+}
+
+// The points of one subtree as the convex parts whose union it is, each
+// given by points whose hull it is: a primitive, a hull, each part of a
+// minkowski, a convex mesh or extrusion outline, each convex piece of a
+// non-convex one (only when the parts are to be summed: a hull takes every
+// point alike).
+struct Parts {
+  std::vector<std::vector<glm::dvec3>> convex;
+  std::size_t points() const { return point_count(convex); }
+  std::vector<glm::dvec3> all_points() const {
+    std::vector<glm::dvec3> all;
+    all.reserve(points());
+    for (const auto& part : convex) all.insert(all.end(), part.begin(), part.end());
+    return all;
+  }
 };
 
 bool drawn(const Call& call) {
@@ -34,8 +50,10 @@ bool drawn(const Call& call) {
   return true;
 }
 
-void add_transformed(const std::vector<glm::dvec3>& points, const glm::dmat4& m, Points& out) {
-  for (const glm::dvec3& p : points) out.at.push_back(glm::dvec3(m * glm::dvec4(p, 1.0)));
+void add_part(const std::vector<glm::dvec3>& points, const glm::dmat4& m, Parts& out) {
+  std::vector<glm::dvec3>& part = out.convex.emplace_back();
+  part.reserve(points.size());
+  for (const glm::dvec3& p : points) part.push_back(glm::dvec3(m * glm::dvec4(p, 1.0)));
 }
 
 // Whether every vertex of the mesh lies on the inner side of every triangle's
@@ -53,43 +71,73 @@ bool is_convex(const TriangleMesh& mesh) {
   return true;
 }
 
-void add_mesh(const Primitive& p, const glm::dmat4& m, Points& out) {
-  add_transformed(p.mesh->vertices, m * p.to_world, out);
-  out.convex = out.convex && is_convex(*p.mesh);
-  ++out.solids;
+// The solid a mesh bounds, less those of `holes` (inside it), placed by m:
+// its points as one part (the holes' lie within), or, when `split` and the
+// solid is not convex, its convex pieces. `what` names it in a refusal.
+void add_solid(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>& holes, const glm::dmat4& m,
+               bool split, const Call& call, std::string_view what, Parts& out) {
+  if (!split || (holes.empty() && is_convex(mesh))) return add_part(mesh.vertices, m, out);
+  std::size_t triangles = mesh.triangles.size();
+  for (const TriangleMesh* hole : holes) triangles += hole->triangles.size();
+  if (triangles > kMaxDecomposedTriangles)
+    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex {} is not supported: it has {} "
+                                           "triangles, more than the {} capsim splits into convex pieces",
+                                           what, triangles, kMaxDecomposedTriangles));
+  ConvexPieces pieces = convex_pieces(mesh, holes);
+  if (!pieces.corners)
+    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex {} is not supported: {}; capsim "
+                                           "sums its convex pieces, which CGAL finds only for a 2-manifold that "
+                                           "does not cross itself",
+                                           what, pieces.reason));
+  for (const auto& piece : *pieces.corners) add_part(piece, m, out);
 }
 
-std::vector<glm::dvec3> summed_points(const Call& call, const FileAccess& files);
+void add_mesh(const Primitive& p, const glm::dmat4& m, bool split, const Call& call, Parts& out) {
+  add_solid(*p.mesh, {}, m * p.to_world, split, call, "mesh", out);
+}
+
+std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAccess& files);
 void read_hull_arguments(const Call& call);
 
+// Collects a subtree's parts; `split`: a non-convex mesh gives its convex
+// pieces (for minkowski), else all its points as one part (for hull).
 class PointCollector {
  public:
-  explicit PointCollector(const FileAccess& files) : files_(files) {}
+  PointCollector(const FileAccess& files, bool split) : files_(files), split_(split) {}
 
-  void collect(const Call& call, const glm::dmat4& m, Points& out) {
+  void collect(const Call& call, const glm::dmat4& m, Parts& out) {
     if (!drawn(call)) return;
     const std::string_view n = call.name;
     if (n == "sphere" || n == "cube" || n == "cylinder") {
       no_children(call);
-      add_transformed(tessellate_primitive(call).points, m, out);
-      ++out.solids;
+      add_part(tessellate_primitive(call).points, m, out);
     } else if (n == "import") {
       no_children(call);
-      for (const Primitive& p : read_import(call, files_.import_dir, files_.max_bytes)) add_mesh(p, m, out);
+      for (const Primitive& p : read_import(call, files_.import_dir, files_.max_bytes)) add_mesh(p, m, split_, call, out);
     } else if (n == "polyhedron" || n == "surface") {
       no_children(call);
       add_mesh(n == "polyhedron" ? read_polyhedron(call) : read_surface(call, files_.import_dir, files_.max_bytes),
-               m, out);
+               m, split_, call, out);
+    } else if (n == "linear_extrude") {
+      // Each outline less the holes directly in it, as projection() reads it.
+      const ExtrudedRegion region =
+          extruded_region(call, {files_.import_dir, files_.max_bytes}, "hull() or minkowski()");
+      for (std::size_t k = 0; k < region.meshes.size(); ++k) {
+        if (!region.outline(k)) continue;
+        std::vector<const TriangleMesh*> holes;
+        for (std::size_t h = 0; h < region.meshes.size(); ++h)
+          if (region.parent[h] == static_cast<int>(k)) holes.push_back(&region.meshes[h]);
+        add_solid(region.meshes[k], holes, m * region.to_call, split_, call, "extrusion", out);
+      }
     } else if (n == "hull") {
       read_hull_arguments(call);
-      Points inner;
-      for (const Call& child : call.children) collect(child, m, inner);
-      out.at.insert(out.at.end(), inner.at.begin(), inner.at.end());
-      ++out.solids;
+      PointCollector points(files_, false);
+      Parts inner;
+      for (const Call& child : call.children) points.collect(child, m, inner);
+      if (std::vector<glm::dvec3> all = inner.all_points(); !all.empty()) out.convex.push_back(std::move(all));
     } else if (n == "minkowski") {
       read_hull_arguments(call);
-      add_transformed(summed_points(call, files_), m, out);
-      ++out.solids;
+      for (const auto& part : summed_parts(call, files_)) add_part(part, m, out);
     } else if (n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror") {
       const glm::dmat4 inner = m * read_transform(call);
       for (const Call& child : call.children) collect(child, inner, out);
@@ -109,8 +157,8 @@ class PointCollector {
                                              n));
     } else {
       throw SceneError(call.loc, fmt::format("{}() under hull() or minkowski() is not supported: capsim takes the "
-                                             "points of sphere, cube, cylinder, polyhedron, import, surface, hull and "
-                                             "minkowski, under transforms, union, color and render",
+                                             "points of sphere, cube, cylinder, polyhedron, import, surface, hull, "
+                                             "minkowski and linear_extrude, under transforms, union, color and render",
                                              n));
     }
   }
@@ -122,6 +170,7 @@ class PointCollector {
                                                   call.name));
   }
   const FileAccess& files_;
+  bool split_;
 };
 
 TriangleMesh hull_of(const std::vector<glm::dvec3>& points, const Call& call) {
@@ -135,38 +184,49 @@ TriangleMesh hull_of(const std::vector<glm::dvec3>& points, const Call& call) {
   return std::move(*built.mesh);
 }
 
-// The corners of the hull of a minkowski's children's point sums.
-std::vector<glm::dvec3> summed_points(const Call& call, const FileAccess& files) {
-  PointCollector collector(files);
-  std::vector<glm::dvec3> sum;
-  bool first = true;
+// The corners of each convex part of a minkowski: the sum distributes over
+// union, so it is the union over every choice of one convex part per child
+// of the hull of the chosen parts' point sums (OpenSCAD's way, its parts
+// those of CGAL's convex decomposition). Refused beyond kMaxMinkowskiParts
+// parts, or kMaxTessellatedPoints point sums in one step.
+std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAccess& files) {
+  PointCollector collector(files, true);
+  std::vector<std::vector<glm::dvec3>> sums;
   for (const Call& child : call.children) {
-    Points part;
-    collector.collect(child, glm::dmat4(1.0), part);
-    if (part.at.empty()) continue;
-    if (!part.convex || part.solids > 1)
-      throw SceneError(child.loc, fmt::format("minkowski() of this child is not supported: it is not a single convex "
-                                              "solid ({}), and capsim sums convex solids only (the hull of their "
-                                              "points' sums); wrap it in hull() if its hull is meant",
-                                              part.solids > 1 ? "a union of several solids" : "a non-convex mesh"));
+    Parts parts;
+    collector.collect(child, glm::dmat4(1.0), parts);
+    if (parts.convex.empty()) continue;
     // Only the corners of each part's hull matter to the sum.
-    std::vector<glm::dvec3> corners = part.at.size() >= 4 ? hull_of(part.at, child).vertices : part.at;
-    if (first) {
-      sum = std::move(corners);
-      first = false;
+    for (auto& part : parts.convex)
+      if (part.size() >= 4) part = hull_of(part, child).vertices;
+    if (sums.empty()) {
+      sums = std::move(parts.convex);
       continue;
     }
-    if (static_cast<double>(sum.size()) * static_cast<double>(corners.size()) > static_cast<double>(kMaxTessellatedPoints))
+    if (sums.size() * parts.convex.size() > kMaxMinkowskiParts)
+      throw SceneError(child.loc, fmt::format("minkowski() would sum {} convex parts by {}, more than the {} parts "
+                                              "capsim makes of one minkowski",
+                                              sums.size(), parts.convex.size(), kMaxMinkowskiParts));
+    const std::size_t so_far = point_count(sums);
+    const double pairs = static_cast<double>(so_far) * static_cast<double>(parts.points());
+    if (pairs > static_cast<double>(kMaxTessellatedPoints))
       throw SceneError(child.loc, fmt::format("minkowski() would sum {} by {} points, more than the {} capsim takes "
                                               "the hull of",
-                                              sum.size(), corners.size(), kMaxTessellatedPoints));
-    std::vector<glm::dvec3> next;
-    next.reserve(sum.size() * corners.size());
-    for (const glm::dvec3& a : sum)
-      for (const glm::dvec3& b : corners) next.push_back(a + b);
-    sum = hull_of(next, call).vertices;
+                                              so_far, parts.points(), kMaxTessellatedPoints));
+    std::vector<std::vector<glm::dvec3>> next;
+    next.reserve(sums.size() * parts.convex.size());
+    for (const auto& a : sums) {
+      for (const auto& b : parts.convex) {
+        std::vector<glm::dvec3> sum;
+        sum.reserve(a.size() * b.size());
+        for (const glm::dvec3& p : a)
+          for (const glm::dvec3& q : b) sum.push_back(p + q);
+        next.push_back(hull_of(sum, call).vertices);
+      }
+    }
+    sums = std::move(next);
   }
-  return sum;
+  return sums;
 }
 
 // hull() and minkowski() take only OpenSCAD's preview hint.
@@ -187,15 +247,19 @@ Primitive mesh_leaf(TriangleMesh mesh, const Call& call) {
 
 Primitive read_hull(const Call& call, const FileAccess& files) {
   read_hull_arguments(call);
-  Points points;
-  PointCollector collector(files);
-  for (const Call& child : call.children) collector.collect(child, glm::dmat4(1.0), points);
-  return mesh_leaf(hull_of(points.at, call), call);
+  Parts parts;
+  PointCollector collector(files, false);
+  for (const Call& child : call.children) collector.collect(child, glm::dmat4(1.0), parts);
+  return mesh_leaf(hull_of(parts.all_points(), call), call);
 }
 
-Primitive read_minkowski(const Call& call, const FileAccess& files) {
+std::vector<Primitive> read_minkowski(const Call& call, const FileAccess& files) {
   read_hull_arguments(call);
-  return mesh_leaf(hull_of(summed_points(call, files), call), call);
+  std::vector<std::vector<glm::dvec3>> parts = summed_parts(call, files);
+  std::vector<Primitive> leaves;
+  if (parts.empty()) leaves.push_back(mesh_leaf(hull_of({}, call), call));  // refused: nothing to sum
+  for (const auto& part : parts) leaves.push_back(mesh_leaf(hull_of(part, call), call));
+  return leaves;
 }
 
 }  // namespace capsim::scene_file

@@ -2,13 +2,15 @@
 // hull() and minkowski(): solids OpenSCAD builds out of its children's
 // points, as closed meshes. The children are read here (not placed as leaves
 // of the CSG tree): their transforms, and the points OpenSCAD's meshes of
-// them have (scene/extrusions/openscad_tessellation.h, polyhedra, imports, surfaces).
+// them have (scene/extrusions/openscad_tessellation.h, polyhedra, imports,
+// surfaces, linear extrusions as scene/extrusions/extruded_region.h meshes them).
 
 #include "capsim/scene.h"
 #include "scene/reading/scene_syntax.h"
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace capsim::scene_file {
 
@@ -23,13 +25,24 @@ struct FileAccess {
 // children's meshes (a sphere is OpenSCAD's polyhedron of it, not the true
 // sphere). Refused when the children give no volume (none, or all their
 // points in one plane), and at a child whose points are not known without
-// evaluating CSG (difference, intersection) or that is 2-D.
+// evaluating CSG (difference, intersection), that is 2-D or a rotate_extrude.
 Primitive read_hull(const Call& call, const FileAccess& files);
 
-// minkowski(): the Minkowski sum of convex children, which is the convex
-// hull of the sums of their points (exact for convex meshes). A child that is
-// not convex as written (a union of several solids, a non-convex polyhedron,
-// import or surface) is refused: its sum needs a convex decomposition.
-Primitive read_minkowski(const Call& call, const FileAccess& files);
+// minkowski(): the Minkowski sum of its children, as OpenSCAD makes it. The
+// sum distributes over union, so each child is taken as convex parts (each
+// solid of a union; a non-convex polyhedron, import, surface or
+// linear_extrude, each outline of the extrusion less its holes, split into
+// convex pieces by CGAL, scene/meshes/convex_decomposition.h) and the sum is
+// the union of the hulls of the point sums of every choice of one part per
+// child: one convex mesh leaf each (exact for the children's meshes).
+// Refused: what hull() refuses, a non-convex solid CGAL cannot split (not a
+// 2-manifold, crossing itself) or of more than kMaxDecomposedTriangles
+// triangles, more than kMaxMinkowskiParts parts, and more than
+// kMaxTessellatedPoints point sums at one child.
+std::vector<Primitive> read_minkowski(const Call& call, const FileAccess& files);
+// Each part is a mesh leaf of its own to hold and trace; the cap keeps one
+// minkowski of two finely split children (their part counts multiply) from
+// taking the scene's primitives and memory.
+inline constexpr std::size_t kMaxMinkowskiParts = 10000;
 
 }  // namespace capsim::scene_file

@@ -385,12 +385,15 @@ class Interpreter {
                  call, id);
   }
 
-  // hull() or minkowski(): one mesh leaf made of the children's points, in
-  // the colour and material around it (OpenSCAD's too).
+  // hull() or minkowski(): mesh leaves made of the children's points (one
+  // for a hull, the union of a minkowski's convex parts), in the colour and
+  // material around it (OpenSCAD's too).
   [[gnu::noinline]] CsgNode point_hull(const Call& call, ContextId id) {
     const scene_file::FileAccess files{import_dir_, max_file_bytes_};
-    return place(call.name == "hull" ? scene_file::read_hull(call, files) : scene_file::read_minkowski(call, files),
-                 call, id);
+    if (call.name == "hull") return place(scene_file::read_hull(call, files), call, id);
+    std::vector<CsgNode> leaves;
+    for (Primitive& p : scene_file::read_minkowski(call, files)) leaves.push_back(place(std::move(p), call, id));
+    return pass_through(call, std::move(leaves));
   }
 
   // A primitive read from `call`, placed by the context's transforms, with its

@@ -2,15 +2,13 @@
 
 #include "scene/regions/scene_projection.h"
 
+#include "scene/extrusions/extruded_region.h"
 #include "scene/extrusions/openscad_tessellation.h"
 #include "scene/regions/projection_2d.h"
-#include "scene/regions/region_2d.h"
-#include "scene/extrusions/scene_extrusion.h"
 #include "scene/reading/scene_args.h"
 #include "scene/meshes/scene_meshes.h"
 #include "scene/reading/scene_modules.h"
 #include "scene/meshes/scene_surface.h"
-#include "scene/extrusions/twisted_extrusion.h"
 
 #include <fmt/format.h>
 
@@ -38,21 +36,16 @@ class SolidReader {
     }
     if (n == "import") {
       no_children(call);
-      CsgNode node;  // the union of the file's objects
-      node.op = CsgOp::Union;
-      node.loc = call.loc;
-      for (const Primitive& p : read_import(call, files_.import_dir, files_.max_bytes))
-        node.children.push_back(leaf(*p.mesh, m * p.to_world, call));
-      return node;
+      return union_of(read_import(call, files_.import_dir, files_.max_bytes), m, call);  // the file's objects
     }
-    if (n == "polyhedron" || n == "surface" || n == "hull" || n == "minkowski") {
-      if (n != "hull" && n != "minkowski") no_children(call);
+    if (n == "polyhedron" || n == "surface" || n == "hull") {
+      if (n != "hull") no_children(call);
       const Primitive p = n == "polyhedron" ? read_polyhedron(call)
                           : n == "surface"  ? read_surface(call, files_.import_dir, files_.max_bytes)
-                          : n == "hull"     ? read_hull(call, files_)
-                                            : read_minkowski(call, files_);
+                                            : read_hull(call, files_);
       return leaf(*p.mesh, m * p.to_world, call);
     }
+    if (n == "minkowski") return union_of(read_minkowski(call, files_), m, call);  // its convex parts
     if (n == "linear_extrude") return extrusion(call, m);
     if (n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror") {
       return group(call, m * read_transform(call), CsgOp::Union);
@@ -102,42 +95,28 @@ class SolidReader {
     return node;
   }
 
-  // linear_extrude: each path of its region (scene/regions/region_2d.h) swept as
-  // OpenSCAD sweeps it (one slice when straight), and the region's even-odd
-  // rule as CSG: each outline at even depth less the paths directly in it.
+  // The union of mesh primitives' leaves.
+  CsgNode union_of(const std::vector<Primitive>& meshes, const glm::dmat4& m, const Call& call) {
+    CsgNode node;
+    node.op = CsgOp::Union;
+    node.loc = call.loc;
+    for (const Primitive& p : meshes) node.children.push_back(leaf(*p.mesh, m * p.to_world, call));
+    return node;
+  }
+
+  // linear_extrude: its region's paths swept, and the region's even-odd
+  // rule as CSG: each outline less the paths directly in it.
   CsgNode extrusion(const Call& call, const glm::dmat4& m) {
-    const Extrusion e = read_linear_extrude(call);
-    Call shape = call;  // the children as one 2-D union
-    shape.name = "union";
-    shape.args.clear();
-    shape.modifiers.clear();
-    const NestedPaths region = nested_region_paths(shape, glm::dmat3(1.0), {files_.import_dir, files_.max_bytes});
-    Sweep sweep;
-    sweep.height = e.height;
-    sweep.twist = e.twist;
-    sweep.scale = e.curved() ? e.scale_xy : glm::dvec2(e.scale);
-    sweep.slices = e.slices;
-    if (sweep.slices == 0) {
-      std::vector<glm::dvec2> points;
-      for (const auto& path : region.paths) points.insert(points.end(), path.begin(), path.end());
-      sweep.slices = e.curved() ? extrusion_slices(points, e) : 1;
-    }
-    glm::dmat4 placed = m;
-    if (e.center) placed = m * glm::dmat4(1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, -e.height / 2, 1);
-    const std::size_t n = region.paths.size();
+    const ExtrudedRegion region = extruded_region(call, {files_.import_dir, files_.max_bytes}, "projection()");
+    const glm::dmat4 placed = m * region.to_call;
+    const std::size_t n = region.meshes.size();
     std::vector<CsgNode> leaves;
-    for (const auto& path : region.paths) {
-      MeshBuild built = build_closed_mesh(sweep_mesh(path, sweep));
-      if (!built.mesh) throw SceneError(call.loc, fmt::format("linear_extrude() under projection(): {}", built.defect.reason));
-      leaves.push_back(leaf(*built.mesh, placed, call));
-    }
+    for (const TriangleMesh& mesh : region.meshes) leaves.push_back(leaf(mesh, placed, call));
     CsgNode node;
     node.op = CsgOp::Union;
     node.loc = call.loc;
     for (std::size_t k = 0; k < n; ++k) {
-      int depth = 0;
-      for (int at = region.parent[k]; at >= 0; at = region.parent[static_cast<std::size_t>(at)]) ++depth;
-      if (depth % 2) continue;
+      if (!region.outline(k)) continue;
       CsgNode outline;
       outline.op = CsgOp::Difference;
       outline.loc = call.loc;
