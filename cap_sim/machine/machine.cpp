@@ -154,4 +154,27 @@ SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& confi
   return simulate_frames({&tracer}, config, threads, show_progress);
 }
 
+SimulationResult simulate_traced_frame(const ScreenTrace& screen, const MachineConfig& config, int threads) {
+  if (screen.aa.depth != config.aa.depth || screen.aa.threshold != config.aa.threshold)
+    throw std::invalid_argument("a screen traced ahead runs with the antialiasing it was traced with");
+  check_balance(config);
+  const PreparedScene& scene = screen.tracer->scene();
+  const MachineConfig resolved = resolve_units({scene_footprint(scene)}, config, screen.width, screen.height);
+  try {
+    const WindowLayout layout = frame_layout(resolved, screen.width, screen.height, 0);
+    std::vector<FrameWork> work;
+    work.push_back(frame_work(
+        scene, layout,
+        trace_cells(screen, layout, resolved.profile.costs, threads, resolved.screen, resolved.completion_cycles,
+                    resolved.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner,
+                    resolved.balance.stealing() ? resolved.balance.chunk_pixels : 0),
+        resolved));
+    tbb::task_arena arena(host_arena_concurrency(threads));
+    return arena.execute([&] { return run_frames(std::move(work), resolved); });
+  } catch (const CycleOverflow& e) {
+    const CostProfile& profile = config.profile;
+    throw e.of_profile(profile.source.empty() ? profile.name : profile.source, profile.clock_hz);
+  }
+}
+
 }  // namespace capsim::sim

@@ -182,4 +182,9 @@ SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
                                 bool show_progress);
 
+// simulate_frame of the screen's tracer, laid out from the screen traced
+// ahead (traced_cells.h): the same result, without tracing again. Throws
+// std::invalid_argument when config's antialiasing is not the screen's.
+SimulationResult simulate_traced_frame(const ScreenTrace& screen, const MachineConfig& config, int threads);
+
 }  // namespace capsim::sim

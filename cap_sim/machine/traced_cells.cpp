@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include <tbb/blocked_range.h>
@@ -151,10 +152,47 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
     set_pixel(cell.samples, k, 0, px);
 }
 
+// Where trace_cells' samples and operations come from: the tracer, tracing
+// them now, or a screen it traced ahead (ScreenTrace), which holds the same
+// samples and counts. Either gives the same cells to the bit.
+struct TracingNow {
+  const Tracer& tracer;
+  PixelSample pixel(int x, int y, Tracer::Scratch& s, OpCounts& ops) const { return tracer.trace_pixel(x, y, s, ops); }
+  CornerSamples corners(int threads, const CornerCostSink& cost, Progress* progress) const {
+    return trace_corners(tracer, threads, cost, progress);
+  }
+  AntialiasedPixel resolve(int x, int y, const ScreenSample c[4], const AntialiasOptions& aa, Tracer::Scratch& s,
+                           OpCounts& ops) const {
+    return resolve_pixel(tracer, x, y, c, aa, s, ops);
+  }
+};
+
+struct TracedAhead {
+  const ScreenTrace& screen;
+  std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * screen.width + x; }
+  PixelSample pixel(int x, int y, Tracer::Scratch&, OpCounts& ops) const {
+    ops += screen.pixel_ops[at(x, y)];
+    return screen.pixels[at(x, y)];
+  }
+  // The corners' costs handed on in row order, on this thread.
+  CornerSamples corners(int, const CornerCostSink& cost, Progress* progress) const {
+    for (int y = 0; y <= screen.height; ++y)
+      for (int x = 0; x <= screen.width; ++x) cost(x, y, screen.corner_ops[screen.corners.index(x, y)]);
+    if (progress) progress->advance(static_cast<std::uint64_t>(screen.width + 1) * (screen.height + 1));
+    return screen.corners;
+  }
+  AntialiasedPixel resolve(int x, int y, const ScreenSample*, const AntialiasOptions&, Tracer::Scratch&,
+                           OpCounts& ops) const {
+    ops += screen.pixel_ops[at(x, y)];
+    return {screen.pixels[at(x, y)], static_cast<int>(screen.subdivision_samples[at(x, y)])};
+  }
+};
+
 // Antialiased: every corner sample traced and charged to the cell that owns it
 // (phase 1), then every pixel resolved from its corners and charged to its
 // cell (phase 3).
-std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const WindowLayout& layout,
+template <class Source>
+std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Tracer& tracer, const WindowLayout& layout,
                                                 const CostTable& costs, int threads,
                                                 Progress* progress, const AntialiasOptions& aa,
                                                 ScreenFormat format, bool keep_write_cycles,
@@ -174,8 +212,8 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
   // rows, which different threads may trace at once).
   std::vector<std::uint64_t> corner_cycles(floats ? static_cast<std::size_t>(width + 1) * (height + 1) : 0);
   tbb::enumerable_thread_specific<Sums> corner_sums([&] { return Sums(cell_count); });
-  const CornerSamples corners = trace_corners(
-      tracer, threads,
+  const CornerSamples corners = source.corners(
+      threads,
       [&](int x, int y, const OpCounts& ops) {
         Sums& sum = corner_sums.local();
         if (tracing == CornerTracing::ByOwner) {
@@ -214,7 +252,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
         const ScreenSample c[4] = {corners.at(x, y), corners.at(x + 1, y), corners.at(x, y + 1),
                                    corners.at(x + 1, y + 1)};
         OpCounts ops;
-        const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, ops);
+        const AntialiasedPixel px = source.resolve(x, y, c, aa, s, ops);
         TracedCell& out = cells[own.cell];
         store(out, own.video_index, px.value, format);
         sum.add(own, ops, chunk_pixels);
@@ -261,15 +299,11 @@ std::vector<TracedCell> trace_cells_antialiased(const Tracer& tracer, const Wind
 }
 
 
-}  // namespace
-
-std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
-                                    const CostTable& costs, int threads, Progress* progress,
-                                    const AntialiasOptions& aa, ScreenFormat format, bool keep_write_cycles,
-                                    CornerTracing corners, int chunk_pixels) {
-  if (aa.depth > 0)
-    return trace_cells_antialiased(tracer, layout, costs, threads, progress, aa, format, keep_write_cycles,
-                                   corners, chunk_pixels);
+// Without antialiasing: every pixel traced and charged to its cell.
+template <class Source>
+std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tracer, const WindowLayout& layout,
+                                          const CostTable& costs, int threads, Progress* progress,
+                                          ScreenFormat format, bool keep_write_cycles, int chunk_pixels) {
   const int cell_count = layout.grid().cell_count();
   const bool floats = format == ScreenFormat::Float;
   std::vector<TracedCell> cells = empty_cells(layout, format, false, keep_write_cycles);
@@ -289,11 +323,11 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
         ++sum.items[owner.cell];
         if (!floats && !keep_write_cycles && chunk_pixels <= 0) {
           // trace_pixel adds its operations to the cell's sum directly.
-          store(out, owner.video_index, tracer.trace_pixel(x, y, s, sum.ops[owner.cell]), format);
+          store(out, owner.video_index, source.pixel(x, y, s, sum.ops[owner.cell]), format);
           continue;
         }
         OpCounts ops;
-        store(out, owner.video_index, tracer.trace_pixel(x, y, s, ops), format);
+        store(out, owner.video_index, source.pixel(x, y, s, ops), format);
         const std::uint64_t cycles = saturated_cycles(ops, costs);
         if (floats) out.pixel_cycles[owner.video_index] = cycles;
         if (keep_write_cycles) out.write_cycles[owner.video_index] = cycles;
@@ -309,6 +343,80 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
     refuse_overflow(tracer, layout, costs, *overflow, "pixels");
   fold_chunks(sums, layout, costs, chunk_pixels, cells);
   return cells;
+}
+
+}  // namespace
+
+std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& layout,
+                                    const CostTable& costs, int threads, Progress* progress,
+                                    const AntialiasOptions& aa, ScreenFormat format, bool keep_write_cycles,
+                                    CornerTracing corners, int chunk_pixels) {
+  const TracingNow now{tracer};
+  if (aa.depth > 0)
+    return trace_cells_antialiased(now, tracer, layout, costs, threads, progress, aa, format, keep_write_cycles,
+                                   corners, chunk_pixels);
+  return trace_cells_plain(now, tracer, layout, costs, threads, progress, format, keep_write_cycles, chunk_pixels);
+}
+
+std::vector<TracedCell> trace_cells(const ScreenTrace& screen, const WindowLayout& layout, const CostTable& costs,
+                                    int threads, ScreenFormat format, bool keep_write_cycles, CornerTracing corners,
+                                    int chunk_pixels) {
+  if (layout.width() != screen.width || layout.height() != screen.height)
+    throw std::invalid_argument("a screen traced ahead is laid out at its own size");
+  const TracedAhead ahead{screen};
+  if (screen.aa.depth > 0)
+    return trace_cells_antialiased(ahead, *screen.tracer, layout, costs, threads, nullptr, screen.aa, format,
+                                   keep_write_cycles, corners, chunk_pixels);
+  return trace_cells_plain(ahead, *screen.tracer, layout, costs, threads, nullptr, format, keep_write_cycles,
+                           chunk_pixels);
+}
+
+ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int threads) {
+  const Camera& cam = tracer.scene().camera;
+  ScreenTrace t;
+  t.tracer = &tracer;
+  t.aa = aa;
+  t.width = cam.width;
+  t.height = cam.height;
+  const std::size_t pixels = static_cast<std::size_t>(cam.width) * cam.height;
+  t.pixels.resize(pixels);
+  t.pixel_ops.resize(pixels);
+  if (aa.depth > 0) {
+    t.corner_ops.resize(static_cast<std::size_t>(cam.width + 1) * (cam.height + 1));
+    t.subdivision_samples.resize(pixels);
+    t.corners = trace_corners(
+        tracer, threads,
+        [&](int x, int y, const OpCounts& ops) { t.corner_ops[static_cast<std::size_t>(y) * (cam.width + 1) + x] = ops; },
+        nullptr);
+  }
+  tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
+  parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
+    Tracer::Scratch& s = scratch.local();
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < cam.width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * cam.width + x;
+        if (aa.depth == 0) {
+          t.pixels[i] = tracer.trace_pixel(x, y, s, t.pixel_ops[i]);
+          continue;
+        }
+        const ScreenSample c[4] = {t.corners.at(x, y), t.corners.at(x + 1, y), t.corners.at(x, y + 1),
+                                   t.corners.at(x + 1, y + 1)};
+        const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, t.pixel_ops[i]);
+        t.pixels[i] = px.value;
+        t.subdivision_samples[i] = static_cast<std::uint32_t>(px.subdivision_samples);
+      }
+  });
+  return t;
+}
+
+std::uint64_t screen_trace_memory(int width, int height, const AntialiasOptions& aa) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  std::uint64_t bytes = pixels * (sizeof(PixelSample) + sizeof(OpCounts));
+  if (aa.depth > 0)
+    bytes += pixels * sizeof(std::uint32_t) +
+             static_cast<std::uint64_t>(width + 1) * static_cast<std::uint64_t>(height + 1) *
+                 (sizeof(ScreenSample) + sizeof(OpCounts));
+  return bytes;
 }
 
 }  // namespace capsim::sim

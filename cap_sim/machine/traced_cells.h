@@ -8,6 +8,7 @@
 #include "machine/costs/cost_profile.h"
 #include "machine/parts/window_controller.h"
 
+#include "capsim/antialias.h"
 #include "capsim/progress.h"
 #include "capsim/render.h"
 #include "capsim/tracer.h"
@@ -69,5 +70,34 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
                                     const AntialiasOptions& aa = {},
                                     ScreenFormat format = ScreenFormat::Float, bool keep_write_cycles = false,
                                     CornerTracing corners = CornerTracing::ByOwner, int chunk_pixels = 0);
+
+// A screen traced once, to be laid out on any cells: every pixel's sample and
+// operations (antialiased, its subdivision's, and every corner sample with its
+// operations), in screen order. Runs that differ only in how the cells share
+// the screen (cells, mode, balance, profile) trace the same pixels: laying out
+// this trace gives each the cells trace_cells gives, to the bit, without
+// tracing again. Holds screen_trace_memory bytes. The tracer must outlive it.
+struct ScreenTrace {
+  const Tracer* tracer = nullptr;
+  AntialiasOptions aa;
+  int width = 0, height = 0;
+  std::vector<PixelSample> pixels;
+  std::vector<OpCounts> pixel_ops;
+  std::vector<std::uint32_t> subdivision_samples;  // antialiased
+  CornerSamples corners;                           // antialiased
+  std::vector<OpCounts> corner_ops;                // antialiased, in corners' order
+};
+
+// The tracer's screen (its camera's size) traced with `aa`. threads: 0 = all
+// hardware threads; the trace does not depend on it.
+ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int threads);
+std::uint64_t screen_trace_memory(int width, int height, const AntialiasOptions& aa);
+
+// trace_cells of the screen's tracer with the screen's antialiasing, from the
+// trace. Precondition: layout is of the screen's size.
+std::vector<TracedCell> trace_cells(const ScreenTrace& screen, const WindowLayout& layout, const CostTable& costs,
+                                    int threads, ScreenFormat format = ScreenFormat::Float,
+                                    bool keep_write_cycles = false, CornerTracing corners = CornerTracing::ByOwner,
+                                    int chunk_pixels = 0);
 
 }  // namespace capsim::sim

@@ -7,6 +7,9 @@
 
 #include <fmt/core.h>
 
+#include <memory>
+#include <optional>
+
 namespace capsim::sim {
 
 namespace {
@@ -38,25 +41,88 @@ std::string run_command(const RunSpec& spec) {
   return fmt::format("capsim lattice {} -o {}{} && {}", spec.lattice->count(), run.scenes[0], size, simulate);
 }
 
-RunFigures run_experiment(const RunSpec& spec, int threads) {
+namespace {
+
+PreparedScene prepared_scene(const RunSpec& spec) {
   PrepareOptions prep;
   prep.grid = spec.grid;
   prep.width = spec.width;
   prep.height = spec.height;
-  const PreparedScene scene = prepare_scene(
+  return prepare_scene(
       spec.lattice ? make_sphere_lattice(*spec.lattice, spec.width, spec.height) : parse_scene_file(spec.scene),
       prep);
+}
+
+TraceOptions trace_options(const RunSpec& spec) {
   TraceOptions trace;
   trace.primary_only = spec.primary_only;
-  const Tracer tracer(scene, trace);
+  return trace;
+}
+
+AntialiasOptions antialiasing(const RunSpec& spec) {
+  AntialiasOptions aa;
+  aa.depth = spec.aa_depth;  // the default threshold, as the command's
+  return aa;
+}
+
+// What decides a run's pixels, and so its trace.
+struct TraceKey {
+  std::string scene;
+  int lattice = 0;
+  int width = 0, height = 0, grid = 0, aa_depth = 0;
+  bool primary_only = false;
+  bool operator==(const TraceKey&) const = default;
+};
+
+TraceKey trace_key(const RunSpec& s) {
+  return {s.lattice ? std::string() : s.scene, s.lattice ? s.lattice->count() : 0, s.width, s.height, s.grid,
+          s.aa_depth, s.primary_only};
+}
+
+}  // namespace
+
+struct ScreenTraces::Kept {
+  TraceKey key;
+  PreparedScene scene;
+  std::unique_ptr<Tracer> tracer;
+  ScreenTrace screen;
+};
+
+ScreenTraces::ScreenTraces() = default;
+ScreenTraces::~ScreenTraces() = default;
+
+const ScreenTrace& ScreenTraces::trace(const RunSpec& spec, int threads) {
+  const TraceKey key = trace_key(spec);
+  if (kept_ && kept_->key == key) return kept_->screen;
+  kept_.reset();  // the old trace goes before the new one is made
+  auto k = std::make_unique<Kept>();
+  k->key = key;
+  k->scene = prepared_scene(spec);
+  k->tracer = std::make_unique<Tracer>(k->scene, trace_options(spec));
+  k->screen = trace_screen(*k->tracer, antialiasing(spec), threads);
+  kept_ = std::move(k);
+  return kept_->screen;
+}
+
+RunFigures run_experiment(const RunSpec& spec, int threads, ScreenTraces* traces) {
+  std::optional<PreparedScene> own_scene;
+  std::optional<Tracer> own_tracer;
+  const ScreenTrace* screen = traces ? &traces->trace(spec, threads) : nullptr;
+  if (!screen) {
+    own_scene.emplace(prepared_scene(spec));
+    own_tracer.emplace(*own_scene, trace_options(spec));
+  }
+  const Tracer& tracer = screen ? *screen->tracer : *own_tracer;
+  const PreparedScene& scene = tracer.scene();
   MachineConfig config;
   config.cells = spec.cells;
   config.mode = spec.mode;
   config.profile = spec.costs ? *spec.costs : load_cost_profile(spec.profile);
-  config.aa.depth = spec.aa_depth;  // the default threshold, as the command's
+  config.aa = antialiasing(spec);
   config.balance = spec.balance;
   config.screen = ScreenFormat::Srgb8;  // as for `-o screen.png`; the cycles do not depend on it
-  const SimulationResult r = simulate_frame(tracer, config, threads, false);
+  const SimulationResult r =
+      screen ? simulate_traced_frame(*screen, config, threads) : simulate_frame(tracer, config, threads, false);
 
   RunFigures f;
   f.command = run_command(spec);

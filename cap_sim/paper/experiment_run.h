@@ -71,7 +71,25 @@ struct RunFigures {
 // screen goes to screen.png.
 std::string run_command(const RunSpec& spec);
 
-// Runs it. threads: host threads (0 = all); the figures do not depend on it.
-RunFigures run_experiment(const RunSpec& spec, int threads);
+// The screen of the latest run traced ahead, for the next runs that trace the
+// same pixels: the same scene (file or lattice), size, grid, primary_only and
+// antialiasing, whatever their cells, mode, balance and costs. The mode
+// benchmarks run twenty such in a row; one kept trace (screen_trace_memory
+// bytes) spares tracing each again.
+class ScreenTraces {
+ public:
+  ScreenTraces();
+  ~ScreenTraces();
+  // The trace for spec, traced now unless it is the one kept.
+  const ScreenTrace& trace(const RunSpec& spec, int threads);
+
+ private:
+  struct Kept;
+  std::unique_ptr<Kept> kept_;
+};
+
+// Runs it. threads: host threads (0 = all); the figures do not depend on it,
+// nor on whether `traces` (may be null) held its screen already.
+RunFigures run_experiment(const RunSpec& spec, int threads, ScreenTraces* traces = nullptr);
 
 }  // namespace capsim::sim

@@ -59,6 +59,8 @@ ModesBench run_modes_bench(const ModesBenchOptions& options) {
   ModesBench b;
   b.options = options;
   b.options.log = nullptr;
+  // A model's runs at one antialiasing depth trace the same screen: once.
+  ScreenTraces traces;
   for (const std::string& file : modes_bench_models())
     for (int aa : modes_bench_aa_depths())
       for (const std::string& scheme : modes_bench_schemes())
@@ -80,7 +82,7 @@ ModesBench run_modes_bench(const ModesBenchOptions& options) {
           r.cells = grid;
           r.aa_depth = aa;
           if (options.log) options.log(run_name(r.model, scheme, to_string(grid), aa));
-          r.figures = run_experiment(s, options.threads);
+          r.figures = run_experiment(s, options.threads, &traces);
           b.runs.push_back(std::move(r));
         }
   // Speed-up against the same model, antialiasing and scheme on the first grid (4x4).
