@@ -106,7 +106,8 @@ void expect_same_contours(const std::vector<std::vector<glm::dvec2>>& theirs, co
 
 // Each design (NAME.scad) and OpenSCAD's export of it (NAME.openscad.svg).
 const char* const kDesigns[] = {"torus",     "torus-cut",  "wedge-cut", "odd-turn",  "mirrored-negative",
-                                "hole-cut",  "offset-fa",  "text",      "import-cut"};
+                                "hole-cut",  "offset-fa",  "text",      "import-cut", "import-dxf",
+                                "nested-projection-cut"};
 
 TEST(ProjectionRevolve, MatchesOpenScadsStoredDrawings) {
   for (const std::string name : kDesigns) {
