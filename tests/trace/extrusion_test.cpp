@@ -4,6 +4,7 @@
 
 #include "capsim/parser.h"
 #include "capsim/tracer.h"
+#include "support/scene_refusal.h"
 
 #include <gtest/gtest.h>
 
@@ -12,14 +13,7 @@
 namespace capsim {
 namespace {
 
-std::string refusal(std::string_view text) {
-  try {
-    parse_scene(text, "t.csg");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "parsed without error";
-}
+using testing::refusal;
 
 // The first hit straight down from above (x, y), +inf on a miss.
 double depth_from_above(const std::string& text, double x, double y) {

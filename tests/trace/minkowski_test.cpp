@@ -6,6 +6,7 @@
 #include "capsim/parser.h"
 #include "capsim/tracer.h"
 #include "support/cli_run.h"
+#include "support/scene_refusal.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -19,14 +20,7 @@ namespace {
 
 using capsim::testing::TempDir;
 
-std::string refusal(std::string_view text, const std::string& file = "t.csg") {
-  try {
-    parse_scene(text, file);
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "parsed without error";
-}
+using capsim::testing::refusal;
 
 constexpr int kSide = 64;
 

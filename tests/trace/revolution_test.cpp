@@ -6,6 +6,7 @@
 #include "capsim/parser.h"
 #include "capsim/polynomial_roots.h"
 #include "capsim/tracer.h"
+#include "support/scene_refusal.h"
 
 #include <gtest/gtest.h>
 
@@ -16,14 +17,7 @@
 namespace capsim {
 namespace {
 
-std::string refusal(std::string_view text) {
-  try {
-    parse_scene(text, "t.csg");
-  } catch (const SceneError& e) {
-    return e.what();
-  }
-  return "parsed without error";
-}
+using testing::refusal;
 
 // The first hit along the ray, +inf on a miss.
 double depth(const std::string& text, const glm::dvec3& origin, const glm::dvec3& dir) {
@@ -311,6 +305,22 @@ TEST(Revolution, BadInputIsRefusedAtItsPlace) {
             std::string::npos);
   // A circle that touches the axis is allowed (a horn torus).
   EXPECT_EQ(refusal("rotate_extrude() translate([5, 0, 0]) circle(5);"), "parsed without error");
+}
+
+// linear_extrude of the shadow of a torus under projection() (OpenSCAD's
+// polyhedron of it, tests/scene/projection_revolve_test.cpp): a slab over the
+// annulus between OpenSCAD's 30-gons of radius 7 and 13.
+TEST(Revolution, AnExtrudedShadowOfOneTraces) {
+  const std::string text =
+      "linear_extrude(height = 2) projection() rotate_extrude($fn = 0, $fa = 12, $fs = 2) "
+      "translate([10, 0, 0]) circle(r = 3, $fn = 0, $fa = 12, $fs = 2);";
+  EXPECT_NEAR(from_above(text, 10, 0), 98, 1e-9);  // the top of the slab
+  EXPECT_NEAR(from_above(text, 0, -10), 98, 1e-9);
+  EXPECT_EQ(from_above(text, 5, 0), kInfinity);     // the hole
+  EXPECT_EQ(from_above(text, 12.9, 3), kInfinity);  // beyond the 30-gon's side, inside the circle
+  // Along the x axis: the 30-gon's corner at (13, 0), then from the centre its inner one at (7, 0).
+  EXPECT_NEAR(depth(text, {100, 0, 1}, {-1, 0, 0}), 87, 1e-4);
+  EXPECT_NEAR(depth(text, {0, 0, 1}, {1, 0, 0}), 7, 1e-4);
 }
 
 }  // namespace

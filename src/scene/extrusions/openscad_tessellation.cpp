@@ -37,11 +37,15 @@ std::uint32_t PolySetBuilder::index(double x, double y, double z) {
   return at->second;
 }
 
-Resolution read_resolution(const Call& call) {
+Resolution read_resolution(const Call& call, bool clamped) {
   Resolution r;
   r.fn = special(call, "$fn", 0);
-  r.fa = std::max(special(call, "$fa", 12), kLeastAngleOrSize);
-  r.fs = std::max(special(call, "$fs", 2), kLeastAngleOrSize);
+  r.fa = special(call, "$fa", 12);
+  r.fs = special(call, "$fs", 2);
+  if (clamped) {
+    r.fa = std::max(r.fa, kLeastAngleOrSize);
+    r.fs = std::max(r.fs, kLeastAngleOrSize);
+  }
   return r;
 }
 

@@ -39,11 +39,12 @@ class PolySetBuilder {
 };
 
 // OpenSCAD's special variables of one call, $fa and $fs clamped below at
-// 0.01 as OpenSCAD clamps them.
+// 0.01 as OpenSCAD clamps them for its primitives (not for rotate_extrude,
+// which reads them as they are: clamped = false).
 struct Resolution {
   double fn = 0, fa = 12, fs = 2;
 };
-Resolution read_resolution(const Call& call);
+Resolution read_resolution(const Call& call, bool clamped = true);
 
 // How many points OpenSCAD puts on a circle of radius r. Refused past
 // kMaxFragments (a zero $fa or $fs, a huge $fn) at `loc`.

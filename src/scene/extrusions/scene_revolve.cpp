@@ -124,12 +124,16 @@ Primitive revolve_region(const std::vector<std::vector<glm::dvec2>>& paths, cons
   return revolved(std::move(profile), r, loc);
 }
 
-void finish_revolution(const CsgNode& tree, std::vector<Primitive>& all, const Revolve& r, const Loc& loc) {
-  const glm::dvec2 range = reach(tree, all);
-  if (range.x < 0 && range.y > 0)
+void check_one_side_of_axis(double min_x, double max_x, const Loc& loc) {
+  if (min_x < 0 && max_x > 0)
     throw SceneError(loc, fmt::format("all points for rotate_extrude() must have the same X coordinate sign (the "
                                       "2-D shape reaches x = {:g} to {:g})",
-                                      range.x, range.y));
+                                      min_x, max_x));
+}
+
+void finish_revolution(const CsgNode& tree, std::vector<Primitive>& all, const Revolve& r, const Loc& loc) {
+  const glm::dvec2 range = reach(tree, all);
+  check_one_side_of_axis(range.x, range.y, loc);
   const bool mirror = range.x < 0;
   // The wedge from `start` through |angle|: counter-clockwise from +x, or
   // from -x for a mirrored shape; a negative angle ends where it would start.

@@ -39,6 +39,10 @@ Primitive revolve_paths(const std::vector<std::vector<glm::dvec2>>& paths, const
 // does not cross, and may touch at vertices, so nothing is checked.
 Primitive revolve_region(const std::vector<std::vector<glm::dvec2>>& paths, const Revolve& r, const Loc& loc);
 
+// OpenSCAD's refusal of a 2-D shape whose points reach x = min_x < 0 and
+// x = max_x > 0 (both sides of the axis), at loc.
+void check_one_side_of_axis(double min_x, double max_x, const Loc& loc);
+
 // After the 2-D tree is built: as OpenSCAD, refuses a shape that reaches both
 // sides of the axis (judged by the tree's box: a union's boxes joined, an
 // intersection's met, a difference's first), and turns a shape at x <= 0 as

@@ -5,6 +5,10 @@
 #include "scene/extrusions/extruded_region.h"
 #include "scene/extrusions/openscad_tessellation.h"
 #include "scene/regions/projection_2d.h"
+#include "scene/regions/region_2d.h"
+#include "scene/extrusions/revolved_mesh.h"
+#include "scene/extrusions/scene_extrusion.h"
+#include "scene/extrusions/scene_revolve.h"
 #include "scene/reading/scene_args.h"
 #include "scene/meshes/scene_meshes.h"
 #include "scene/reading/scene_modules.h"
@@ -12,6 +16,7 @@
 
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <optional>
 
 namespace capsim::scene_file {
@@ -47,6 +52,7 @@ class SolidReader {
     }
     if (n == "minkowski") return union_of(read_minkowski(call, files_), m, call);  // its convex parts
     if (n == "linear_extrude") return extrusion(call, m);
+    if (n == "rotate_extrude") return revolution(call, m);
     if (n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror") {
       return group(call, m * read_transform(call), CsgOp::Union);
     }
@@ -65,8 +71,8 @@ class SolidReader {
       return group(call, m, n == "difference" ? CsgOp::Difference : CsgOp::Intersection);
     }
     throw SceneError(call.loc, fmt::format("{}() under projection() is not supported: capsim projects sphere, cube, "
-                                           "cylinder, polyhedron, import, surface, hull, minkowski and "
-                                           "linear_extrude, under transforms, union, difference and intersection",
+                                           "cylinder, polyhedron, import, surface, hull, minkowski, "
+                                           "linear_extrude and rotate_extrude, under transforms, union, difference and intersection",
                                            n));
   }
 
@@ -126,6 +132,36 @@ class SolidReader {
       node.children.push_back(std::move(outline));
     }
     return node;
+  }
+
+  // rotate_extrude: OpenSCAD's polyhedron of it (scene/extrusions/revolved_mesh.h)
+  // from OpenSCAD's 2-D shape of the children, unrounded (no clipping past
+  // OpenSCAD's own). Each outline's surface is closed, and they go into one
+  // mesh: a vertical line's crossings, paired, then meet the solid under the
+  // even-odd rule the outlines are read by, with no nesting to find.
+  CsgNode revolution(const Call& call, const glm::dmat4& m) {
+    const Revolve r = read_rotate_extrude(call);
+    const Polygon2d shape = evaluate_region(as_union(call), {files_.import_dir, files_.max_bytes});
+    const RevolvedMeshing plan = plan_revolved_mesh(shape, r.angle, read_resolution(call, false), call.loc);
+    TriangleMesh all;
+    for (const Outline2d& o : shape.outlines) {
+      MeshBuild built = build_closed_mesh(revolved_outline_mesh(o.vertices, plan));
+      if (!built.mesh)
+        throw SceneError(call.loc, fmt::format("rotate_extrude() under projection(): {}", built.defect.reason));
+      const auto base = static_cast<std::uint32_t>(all.vertices.size());
+      all.vertices.insert(all.vertices.end(), built.mesh->vertices.begin(), built.mesh->vertices.end());
+      for (const auto& t : built.mesh->triangles) all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    }
+    return leaf(all, m, call);
+  }
+
+  // An extrusion's children as one 2-D union.
+  static Call as_union(const Call& call) {
+    Call shape = call;
+    shape.name = "union";
+    shape.args.clear();
+    shape.modifiers.clear();
+    return shape;
   }
 
   // An operator over the children; a difference or intersection's first
