@@ -303,4 +303,73 @@ TEST(MeshOracle, MinkowskiSumsOfUnionsNonConvexMeshesAndExtrusionsAgreeWithOpenS
   expect_agreement(scad, "minkowski", dir, "-D '$fn=24'");
 }
 
+// minkowski() of a difference (a cube less a cylinder: CGAL's convex pieces
+// of the Nef result, summed each), of an intersection, of a revolved ring
+// and of a difference of revolutions, and hull() of a difference (the
+// corners of the evaluated solid, not of its operands).
+TEST(MeshOracle, MinkowskiSumsOfEvaluatedSolidsAgreeWithOpenScadsStl) {
+  if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
+  TempDir dir;
+  const std::string scad = dir / "evaluated.scad";
+  std::ofstream(scad) << "minkowski() {\n"
+                         "  difference() { cube(8, center = true); cylinder(r = 2.5, h = 10, center = true); }\n"
+                         "  sphere(0.6, $fn = 8);\n"
+                         "}\n"
+                         "translate([14, 0, 0]) minkowski() {\n"
+                         "  intersection() { cube(8, center = true); rotate([0, 0, 45]) cube([10, 4, 6], center = true); }\n"
+                         "  cylinder(r = 0.5, h = 1);\n"
+                         "}\n"
+                         "translate([0, 14, 0]) minkowski() {\n"
+                         "  rotate_extrude() translate([3, 0, 0]) square([1.5, 2]);\n"
+                         "  cube(0.8, center = true);\n"
+                         "}\n"
+                         "translate([14, 14, 0]) minkowski() {\n"
+                         "  difference() {\n"
+                         "    rotate_extrude($fn = 10) translate([2, 0, 0]) circle(1.5, $fn = 6);\n"
+                         "    translate([0, -5, -5]) cube(10);\n"
+                         "  }\n"
+                         "  sphere(0.4);\n"
+                         "}\n"
+                         "translate([0, 28, 0]) hull() {\n"
+                         "  difference() { cube(8, center = true); translate([2, 2, 2]) cube(8); }\n"
+                         "  translate([8, 0, 0]) sphere(1);\n"
+                         "}\n";
+  // Few fragments: OpenSCAD's sums of the revolutions' many pieces are slow.
+  expect_agreement(scad, "evaluated", dir, "-D '$fn=16'");
+}
+
+// hull() and minkowski() of 2-D shapes (CGAL's hull, Clipper's sum as
+// OpenSCAD forms them) under linear_extrude and rotate_extrude.
+TEST(MeshOracle, TwoDHullsAndSumsAgreeWithOpenScadsStl) {
+  if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
+  TempDir dir;
+  const std::string scad = dir / "hulls2d.scad";
+  std::ofstream(scad) << "linear_extrude(height = 3) hull() { circle(2); translate([8, 0]) square(3); }\n"
+                         "translate([0, 12, 0]) linear_extrude(height = 2) minkowski() {\n"
+                         "  difference() { square(10); translate([3, 3]) square(4); }\n"
+                         "  circle(1);\n"
+                         "}\n"
+                         "translate([20, 0, 0]) rotate_extrude() translate([5, 0]) hull() {\n"
+                         "  circle(1);\n"
+                         "  translate([2, 2]) circle(0.5);\n"
+                         "}\n";
+  expect_agreement(scad, "hulls2d", dir);
+}
+
+// resize() of a sphere (its tessellation's box), of a difference (the
+// evaluated solid's box), with auto, and of a 2-D circle under an
+// extrusion: the scale OpenSCAD derives, applied to capsim's exact solids
+// (so the silhouettes differ as the tessellation does).
+TEST(MeshOracle, ResizedSolidsAgreeWithOpenScadsStl) {
+  if (!have_openscad()) GTEST_SKIP() << "openscad not installed";
+  TempDir dir;
+  const std::string scad = dir / "resize.scad";
+  std::ofstream(scad) << "resize([12, 6, 4]) sphere(3);\n"
+                         "translate([16, 0, 0]) resize([10, 0, 0], auto = true)\n"
+                         "  difference() { cube([4, 4, 2]); translate([2, -1, -1]) cube([3, 2, 4]); }\n"
+                         "translate([0, 14, 0]) resize(newsize = [0, 0, 9], auto = [true, false, false]) cylinder(r = 2, h = 3);\n"
+                         "translate([16, 14, 0]) linear_extrude(height = 3) resize([9, 5]) circle(2);\n";
+  expect_agreement(scad, "resize", dir, "-D '$fn=96'", false);  // exact solids
+}
+
 }  // namespace

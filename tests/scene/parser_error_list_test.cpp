@@ -47,30 +47,30 @@ TEST(ParserErrorList, EveryUnsupportedModuleIsNamedInFileOrder) {
   // The constructs of OpenSCAD's GEB example, as its CSG export nests them.
   const std::string text =
       "color(\"Ivory\") intersection() {\n"
-      "  resize([1, 1, 1]) linear_extrude(height = 20) offset(r = 0.5) text(text = \"B\");\n"
+      "  linear_extrude(height = 20) import_dxf(file = \"B.dxf\");\n"
       "  sphere(1);\n"
       "}\n"
       "translate([0, 0, -20]) linear_extrude(height = 1) difference() {\n"
       "  square(size = [40, 40], center = true);\n"
-      "  resize([2, 2]) circle(1);\n"
+      "  children(0);\n"
       "}\n"
       "sphree(1);\n";
   const std::string what = error_of(text);
-  EXPECT_EQ(places(what), (std::vector<std::string>{"t.csg:2:3", "t.csg:7:3", "t.csg:9:1"})) << what;
-  EXPECT_NE(what.find("t.csg:2:3: 'resize' is not supported"), std::string::npos) << what;
+  EXPECT_EQ(places(what), (std::vector<std::string>{"t.csg:2:31", "t.csg:7:3", "t.csg:9:1"})) << what;
+  EXPECT_NE(what.find("t.csg:2:31: 'import_dxf' is not supported"), std::string::npos) << what;
   EXPECT_NE(what.find("t.csg:9:1: unknown module 'sphree' (did you mean 'sphere'?)"), std::string::npos) << what;
   // The error's own place and message are the first's.
   try {
     parse_scene(text, kFile);
   } catch (const SceneError& e) {
     EXPECT_EQ(e.loc().line, 2);
-    EXPECT_EQ(e.loc().col, 3);
-    EXPECT_EQ(e.message().rfind("'resize' is not supported", 0), 0u) << e.message();
+    EXPECT_EQ(e.loc().col, 31);
+    EXPECT_EQ(e.message().rfind("'import_dxf' is not supported", 0), 0u) << e.message();
   }
 }
 
 TEST(ParserErrorList, AnotherErrorAfterThemEndsTheList) {
-  const std::string what = error_of("resize([1, 1, 1]) sphere(1);\nresize([2, 2, 2]) cube(1);\nsphere(r = -1);\ncircle(1);\n");
+  const std::string what = error_of("children(0);\nchildren(1);\nsphere(r = -1);\ncircle(1);\n");
   const std::vector<std::string> at = places(what);
   ASSERT_EQ(at.size(), 3u) << what;
   EXPECT_EQ(at[0], "t.csg:1:1");
@@ -80,14 +80,14 @@ TEST(ParserErrorList, AnotherErrorAfterThemEndsTheList) {
 }
 
 TEST(ParserErrorList, AnErrorBeforeThemIsTheOnlyOne) {
-  const std::string what = error_of("sphere(r = -1);\nresize([1, 1, 1]) sphere(1);\n");
+  const std::string what = error_of("sphere(r = -1);\nchildren(0);\n");
   EXPECT_EQ(places(what).size(), 1u) << what;
   EXPECT_EQ(what.rfind("t.csg:1:", 0), 0u) << what;
 }
 
 TEST(ParserErrorList, TheListStopsAtFiftyAndCountsTheRest) {
   std::string text;
-  for (int i = 0; i < 53; ++i) text += "resize([1, 1, 1]) cube(1);\n";
+  for (int i = 0; i < 53; ++i) text += "children(0);\n";
   const std::string what = error_of(text);
   const std::vector<std::string> at = places(what);
   ASSERT_EQ(at.size(), kMaxListedSceneErrors + 1) << what;

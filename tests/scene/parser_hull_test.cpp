@@ -74,9 +74,10 @@ TEST(Hull, Refusals) {
   EXPECT_EQ(refusal("hull() { }"), "t.csg:1:1: hull() has no solid children: it encloses nothing");
   EXPECT_EQ(refusal("hull() { cube(1); %sphere(3); }\nhull() *cube(2);"),
             "t.csg:2:1: hull() has no solid children: it encloses nothing");
-  EXPECT_EQ(refusal("hull() {\n  difference() { cube(2); sphere(1); }\n}").substr(0, 40),
-            "t.csg:2:3: difference() under hull() or ");
-  EXPECT_EQ(refusal("hull() square(2);").substr(0, 37), "t.csg:1:8: square() under hull() or m");
+  EXPECT_EQ(refusal("hull() {\n  difference() { cube(2); square(1); }\n}").substr(0, 36),
+            "t.csg:2:27: square() under hull() or");
+  // A 2-D first child makes a 2-D hull (drawn flat): a solid after it is refused.
+  EXPECT_EQ(refusal("hull() { cube(1); square(2); }").substr(0, 39), "t.csg:1:19: square() under hull() or mi");
   EXPECT_EQ(refusal("hull() !cube(1);").substr(0, 30), "t.csg:1:8: the '!' (root) modi");
   EXPECT_EQ(refusal("hull(convexity = 2, 3) cube(1);").substr(0, 11), "t.csg:1:21:");
   EXPECT_EQ(refusal("hull() sphere(1, $fn = 5000);").substr(0, 26), "t.csg:1:8: sphere would ha");

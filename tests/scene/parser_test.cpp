@@ -213,6 +213,15 @@ TEST(ParserTransforms, TranslateScaleMirror) {
       Near(world("mirror() cube();", {1, 2, 3}), {-1, 2, 3}));  // OpenSCAD's default [1, 0, 0]
 }
 
+// [x, y] as OpenSCAD 2021.01 reads it (its CSG export writes the matrices):
+// translate and mirror take z = 0, scale z = 1, rotate a z angle of 0.
+TEST(ParserTransforms, TwoNumberVectorsTakeOpenScadsThird) {
+  EXPECT_TRUE(Near(world("translate([1, 2]) sphere();", {0, 0, 1}), {1, 2, 1}));
+  EXPECT_TRUE(Near(world("scale([2, 3]) cube();", {1, 1, 1}), {2, 3, 1}));
+  EXPECT_TRUE(Near(world("mirror([0, 1]) cube();", {1, 2, 3}), {1, -2, 3}));
+  EXPECT_TRUE(Near(world("rotate([90, 90]) cube();", {1, 2, 3}), world("rotate([90, 90, 0]) cube();", {1, 2, 3}), 0));
+}
+
 TEST(ParserTransforms, MultmatrixIsRowMajor) {
   EXPECT_TRUE(
       Near(world("multmatrix([[1, 0, 0, 5], [0, 1, 0, 6], [0, 0, 1, 7], [0, 0, 0, 1]]) cube();",
@@ -512,7 +521,9 @@ TEST(ParserRefusesConstructs, UnsupportedModules) {
     const char* call;
   };
   const Case cases[] = {
-      {"resize", "resize([1, 1, 1]) cube();"},
+      {"children", "children(0);"},
+      {"parent_module", "parent_module(1);"},
+      {"import_stl", "import_stl(\"a.stl\");"},
   };
   for (const Case& c : cases) {
     std::string text = std::string("cube();\n  ") + c.call;
@@ -522,8 +533,8 @@ TEST(ParserRefusesConstructs, UnsupportedModules) {
 }
 
 TEST(ParserRefusesConstructs, UnsupportedModuleNestedInTree) {
-  EXPECT_TRUE(Refused("difference() {\n  cube();\n  translate([1, 0, 0]) resize([1, 1, 1]) sphere();\n}", 3,
-                      24, "'resize' is not supported: resizing"));
+  EXPECT_TRUE(Refused("difference() {\n  cube();\n  translate([1, 0, 0]) children(0);\n}", 3, 24,
+                      "'children' is not supported: it is not part of a plain CSG tree"));
 }
 
 // The refusal says what capsim lacks for the module: 2-D shapes and the
@@ -533,11 +544,10 @@ TEST(ParserRefusesConstructs, TwoDShapesAndExtrusionsSayWhy) {
   // 2-D shapes alone are drawn flat (tests/scene/region_2d_test.cpp).
   for (const char* shape : {"square(2);", "circle(2);", "polygon([[0, 0], [1, 0], [0, 1]]);", "offset(1) square();"})
     EXPECT_FALSE(parse_scene(shape, "t.csg").primitives.empty()) << shape;
-  EXPECT_TRUE(Refused("projection() resize([1, 1, 1]) cube();", 1, 14,
-                      "resize() under projection() is not supported: capsim projects sphere, cube"));
-  EXPECT_TRUE(Refused("resize([1, 1, 1]) cube();", 1, 1,
-                      "'resize' is not supported: resizing to the children's bounds is not "
-                      "supported; use scale(); supported:"));
+  EXPECT_TRUE(Refused("projection() text(\"a\");", 1, 14,
+                      "text() under projection() is not supported: capsim projects sphere, cube"));
+  EXPECT_TRUE(Refused("linear_extrude(1) children(0);", 1, 19,
+                      "'children' is not supported: it is not part of a plain CSG tree; supported:"));
 }
 
 TEST(ParserRefusesConstructs, UnknownModuleSuggestsSpelling) {
@@ -787,13 +797,15 @@ TEST(ParserRefusesValues, WrongTypes) {
                       "argument 'center' of cube must be true or false, got a number"));
   EXPECT_TRUE(Refused("translate([1, true, 0]) cube();", 1, 15, "element 2 is a boolean"));
   EXPECT_TRUE(Refused("translate(3) cube();", 1, 11,
-                      "argument 'v' of translate must be a vector of 3 numbers"));
+                      "argument 'v' of translate must be a vector of 2 or 3 numbers"));
+  EXPECT_TRUE(Refused("translate([1]) cube();", 1, 11, "must be a vector of 2 or 3 numbers, got a vector of 1"));
+  EXPECT_TRUE(Refused("scale([1, 2, 3, 4]) cube();", 1, 7, "must be a number or a vector of 2 or 3 numbers"));
   EXPECT_TRUE(
       Refused("sphere($fn = \"many\");", 1, 14, "argument '$fn' of sphere must be a number"));
   EXPECT_TRUE(Refused("rotate(a = [90, 0, 0], v = [1, 0, 0]) cube();", 1, 24,
                       "'v' (an axis) is used only with a scalar angle 'a'"));
   EXPECT_TRUE(
-      Refused("rotate(a = \"x\") cube();", 1, 12, "must be a number or a vector of 3 numbers"));
+      Refused("rotate(a = \"x\") cube();", 1, 12, "must be a number or a vector of 2 or 3 numbers"));
 }
 
 TEST(ParserRefusesValues, Colours) {

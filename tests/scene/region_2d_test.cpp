@@ -189,5 +189,58 @@ TEST(Region2d, RegionPathsServeOtherExtrusions) {
   EXPECT_EQ(paths[0].size() + paths[1].size(), 12u);
 }
 
+// hull() of 2-D shapes: CGAL's hull of every outline vertex, one outline
+// counter-clockwise from the lowest-x point. Two diamonds ($fn = 4 circles)
+// four apart give a hexagon.
+TEST(Region2d, HullIsTheConvexHullOfEveryVertex) {
+  const Polygon2d h = region("hull() { circle(1, $fn = 4); translate([4, 0]) circle(1, $fn = 4); }");
+  ASSERT_EQ(h.outlines.size(), 1u);
+  const std::vector<glm::dvec2> want{{-1, 0}, {0, -1}, {4, -1}, {5, 0}, {4, 1}, {0, 1}};
+  ASSERT_EQ(h.outlines[0].vertices.size(), want.size());
+  for (std::size_t k = 0; k < want.size(); ++k) {
+    EXPECT_NEAR(h.outlines[0].vertices[k].x, want[k].x, 1e-12) << k;
+    EXPECT_NEAR(h.outlines[0].vertices[k].y, want[k].y, 1e-12) << k;
+  }
+  EXPECT_NEAR(area(h), 10, 1e-9);
+}
+
+// minkowski() of 2-D shapes, OpenSCAD's way through Clipper: a square plus
+// a diamond is the octagon of the square grown by it (4 x 4 less four half
+// unit corners); a frame's hole shrinks to what the diamond fits into (the
+// shapes placed inside each other fill the middle); three squares add up.
+TEST(Region2d, MinkowskiSumsTheShapes) {
+  const Polygon2d octagon = region("minkowski() { square(2); circle(1, $fn = 4); }");
+  EXPECT_EQ(octagon.outlines.size(), 1u);
+  EXPECT_NEAR(area(octagon), 14, 1e-9);
+  const Polygon2d frame =
+      region("minkowski() { difference() { square(10); translate([3, 3]) square(4); } circle(1, $fn = 4); }");
+  EXPECT_EQ(frame.outlines.size(), 2u);
+  EXPECT_NEAR(area(frame), 142 - 4, 1e-9);
+  EXPECT_NEAR(area(region("minkowski() { square(1); square(1); square(1); }")), 9, 1e-9);
+  EXPECT_NEAR(area(region("minkowski() { square(3); }")), 9, 1e-9);
+}
+
+// Both extrude, revolve and draw alone (1 unit thick) like any 2-D shape,
+// and a 3-D child among their 2-D ones is refused at the child.
+TEST(Region2d, HullAndMinkowskiAreShapesEverywhere) {
+  for (const char* text : {"linear_extrude(height = 2) hull() { circle(1); translate([3, 0]) square(1); }",
+                           "rotate_extrude() translate([3, 0]) minkowski() { square(1); circle(0.5); }",
+                           "hull() { circle(1); translate([3, 0]) circle(1); }"}) {
+    const Scene s = parse_scene(text, "t.csg");
+    EXPECT_FALSE(s.primitives.empty()) << text;
+  }
+  // Alone, as its extrusion 1 unit thick centred on z = 0.
+  const Scene flat = parse_scene("minkowski() { square(2); circle(1, $fn = 4); }", "t.csg");
+  const Scene slab =
+      parse_scene("linear_extrude(height = 1, center = true) minkowski() { square(2); circle(1, $fn = 4); }", "t.csg");
+  ASSERT_EQ(flat.primitives.size(), slab.primitives.size());
+  for (std::size_t k = 0; k < flat.primitives.size(); ++k) {
+    EXPECT_EQ(flat.primitives[k].kind, slab.primitives[k].kind);
+    EXPECT_EQ(flat.primitives[k].to_world, slab.primitives[k].to_world);
+  }
+  EXPECT_EQ(refusal("linear_extrude(height = 1) hull() {\n  circle(1);\n  cube(1);\n}").substr(0, 41),
+            "t.csg:3:3: cube() is not a 2-D shape: 2-D");
+}
+
 }  // namespace
 }  // namespace capsim

@@ -10,6 +10,9 @@
 #include <CGAL/convex_decomposition_3.h>
 #include <fmt/format.h>
 
+#include <map>
+#include <numeric>
+
 namespace capsim {
 
 namespace {
@@ -33,11 +36,28 @@ struct ShellCorners {
   void visit(Nef::SFace_const_handle) const {}
 };
 
-// The Nef polyhedron a mesh bounds, or empty with why CGAL cannot have it.
+// The Nef polyhedron of one closed surface, given by the mesh's faces that
+// form it: the volume it bounds, whichever way its faces turn (a mirrored
+// mesh's face inwards). The surface takes only the points its faces name
+// (CGAL's conversion fails on a vertex without faces).
+Nef nef_of_shell(const std::vector<Kernel::Point_3>& points, std::vector<std::vector<std::size_t>> faces) {
+  std::map<std::size_t, std::size_t> renumbered;
+  std::vector<Kernel::Point_3> used;
+  for (auto& face : faces)
+    for (std::size_t& v : face) {
+      auto [it, added] = renumbered.try_emplace(v, used.size());
+      if (added) used.push_back(points[v]);
+      v = it->second;
+    }
+  Mesh shell;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(used, faces, shell);
+  return Nef(shell);
+}
+
+// The Nef polyhedron a mesh bounds: what lies inside an odd number of its
+// closed surfaces (connected by shared corners); or empty with why CGAL
+// cannot have it.
 std::optional<Nef> nef_of(const TriangleMesh& mesh, std::string& reason) {
-  std::vector<Kernel::Point_3> points;
-  points.reserve(mesh.vertices.size());
-  for (const glm::dvec3& v : mesh.vertices) points.emplace_back(v.x, v.y, v.z);
   std::vector<std::vector<std::size_t>> faces;
   faces.reserve(mesh.triangles.size());
   for (const auto& t : mesh.triangles) faces.push_back({t[0], t[1], t[2]});
@@ -46,6 +66,9 @@ std::optional<Nef> nef_of(const TriangleMesh& mesh, std::string& reason) {
     reason = "its faces meet at an edge or corner shared by more than one sheet of surface (not a 2-manifold)";
     return std::nullopt;
   }
+  std::vector<Kernel::Point_3> points;
+  points.reserve(mesh.vertices.size());
+  for (const glm::dvec3& v : mesh.vertices) points.emplace_back(v.x, v.y, v.z);
   Mesh surface;
   PMP::polygon_soup_to_polygon_mesh(points, faces, surface);
   // A Nef polyhedron of a surface that crosses itself is undefined.
@@ -53,26 +76,69 @@ std::optional<Nef> nef_of(const TriangleMesh& mesh, std::string& reason) {
     reason = "its surface crosses itself";
     return std::nullopt;
   }
-  return Nef(surface);
+  // The shells: corners joined by the triangles, each shell's faces in the
+  // mesh's order, the shells in the order of their first face.
+  std::vector<std::size_t> root(mesh.vertices.size());
+  std::iota(root.begin(), root.end(), std::size_t{0});
+  auto find = [&](std::size_t v) {
+    while (root[v] != v) v = root[v] = root[root[v]];
+    return v;
+  };
+  for (const auto& f : faces) {
+    const std::size_t first = find(f[0]);
+    root[find(f[1])] = first;
+    root[find(f[2])] = first;
+  }
+  std::map<std::size_t, std::vector<std::vector<std::size_t>>> shells;
+  std::vector<std::size_t> order;
+  for (const auto& f : faces) {
+    auto [it, added] = shells.try_emplace(find(f[0]));
+    if (added) order.push_back(it->first);
+    it->second.push_back(f);
+  }
+  Nef solid;  // empty
+  for (std::size_t key : order) solid ^= nef_of_shell(points, std::move(shells[key]));
+  return solid;
+}
+
+// The Nef polyhedron of a CSG tree of meshes; empty when a leaf has none.
+std::optional<Nef> evaluate(const CsgNode& node, const scene_file::MeshedSolids& solids, std::string& reason) {
+  if (node.is_leaf) return nef_of(solids.meshes.at(static_cast<std::size_t>(node.primitive)), reason);
+  std::optional<Nef> result;
+  for (const CsgNode& child : node.children) {
+    std::optional<Nef> operand = evaluate(child, solids, reason);
+    if (!operand) return std::nullopt;
+    if (!result) {
+      result = std::move(operand);
+    } else if (node.op == CsgOp::Union) {
+      *result += *operand;
+    } else if (node.op == CsgOp::Difference) {
+      *result -= *operand;
+    } else {
+      *result *= *operand;
+    }
+  }
+  if (!result) result.emplace();  // no operands: nothing
+  return result;
 }
 
 }  // namespace
 
-ConvexPieces convex_pieces(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>& holes) {
+ConvexPieces solid_pieces(const scene_file::MeshedSolids& solids, bool split) {
   ConvexPieces pieces;
   try {
-    std::optional<Nef> nef = nef_of(mesh, pieces.reason);
-    for (const TriangleMesh* hole : holes) {
-      if (!nef) break;
-      if (std::optional<Nef> cut = nef_of(*hole, pieces.reason)) {
-        *nef -= *cut;
-      } else {
-        nef.reset();
-      }
-    }
+    std::optional<Nef> nef = evaluate(solids.root, solids, pieces.reason);
     if (!nef) return pieces;
-    CGAL::convex_decomposition_3(*nef);
+    *nef = nef->regularization();
     std::vector<std::vector<glm::dvec3>> corners;
+    if (!split) {
+      std::vector<glm::dvec3>& all = corners.emplace_back();
+      for (auto v = nef->vertices_begin(); v != nef->vertices_end(); ++v) ShellCorners{&all}.visit(v);
+      if (all.empty()) corners.clear();
+      pieces.corners = std::move(corners);
+      return pieces;
+    }
+    CGAL::convex_decomposition_3(*nef);
     // The first volume is the unbounded outside; the marked ones after it
     // are the solid's convex pieces, each bounded by one shell.
     for (auto volume = ++nef->volumes_begin(); volume != nef->volumes_end(); ++volume) {

@@ -1,11 +1,13 @@
 #pragma once
-// The convex pieces of a closed mesh, as OpenSCAD's minkowski() finds them:
-// CGAL's convex_decomposition_3 on the mesh's Nef polyhedron (exact
-// arithmetic), whose pieces' union is the solid. minkowski() distributes over
-// union, so a non-convex child is summed piece by piece. The one translation
-// unit that includes CGAL; CGAL's templates stay out of every other.
+// The convex pieces of a solid, as OpenSCAD's minkowski() finds them: the
+// Nef polyhedron of its meshes under their CSG tree (CGAL's booleans, exact
+// arithmetic), split by CGAL's convex_decomposition_3; the pieces' union is
+// the solid. minkowski() distributes over union, so a non-convex child is
+// summed piece by piece. The one translation unit that includes CGAL;
+// CGAL's templates stay out of every other.
 
 #include "capsim/triangle_mesh.h"
+#include "scene/meshes/meshed_solids.h"
 
 #include <glm/glm.hpp>
 
@@ -16,21 +18,24 @@
 
 namespace capsim {
 
-// The corners of each convex piece of the solid a mesh bounds, less those of
-// `holes` (the holes of an extruded region, inside it), in the mesh's
+// The corners of each convex piece of the solid `solids` evaluates to
+// (`split`), or every corner of it as one piece (for a hull), in the meshes'
 // coordinates rounded to double from CGAL's exact ones; or why there are
 // none: a mesh's triangles do not form a 2-manifold (edges or corners shared
 // by more than one sheet), its surface crosses itself, or CGAL refused it (a
-// failed precondition). Precondition: the meshes are closed and oriented
-// (build_closed_mesh) and have at most kMaxDecomposedTriangles triangles
-// together: the Nef polyhedron's exact arithmetic is slow, about 25 s on one
-// core for a surface() of 35 x 35 random heights (some 4,900 triangles), 3 s
-// for one of 15 x 15.
+// failed precondition). The result is regularized: a face or edge left
+// without volume around it (two operands that only touch) is dropped. A solid that
+// evaluates to nothing has no pieces. A mesh's closed surfaces meet under
+// the even-odd rule. Preconditions: the meshes are closed (build_closed_mesh)
+// and have at most kMaxDecomposedTriangles triangles together: the Nef
+// polyhedron's exact arithmetic is slow, about 25 s on one core for a
+// surface() of 35 x 35 random heights (some 4,900 triangles), 3 s for one of
+// 15 x 15.
 struct ConvexPieces {
   std::optional<std::vector<std::vector<glm::dvec3>>> corners;
   std::string reason;
 };
-ConvexPieces convex_pieces(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>& holes = {});
+ConvexPieces solid_pieces(const scene_file::MeshedSolids& solids, bool split = true);
 inline constexpr std::size_t kMaxDecomposedTriangles = 5000;
 
 }  // namespace capsim

@@ -4,16 +4,21 @@
 
 #include "scene/meshes/convex_decomposition.h"
 #include "scene/meshes/convex_hull.h"
+#include "scene/meshes/meshed_solids.h"
 #include "scene/extrusions/extruded_region.h"
 #include "scene/extrusions/openscad_tessellation.h"
 #include "scene/reading/scene_args.h"
 #include "scene/meshes/scene_meshes.h"
+#include "scene/meshes/scene_resize.h"
 #include "scene/reading/scene_modules.h"
 #include "scene/meshes/scene_surface.h"
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <memory>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace capsim::scene_file {
@@ -71,25 +76,62 @@ bool is_convex(const TriangleMesh& mesh) {
   return true;
 }
 
+// The solid `solids` evaluates to, placed by m, evaluated by CGAL: its
+// convex pieces when `split`, else all its corners as one part. `what`
+// names it in a refusal at `call`.
+void add_evaluated(const MeshedSolids& solids, const glm::dmat4& m, bool split, const Call& call,
+                   std::string_view what, Parts& out) {
+  const std::string subject = split ? fmt::format("minkowski() of this non-convex {}", what)
+                                    : fmt::format("hull() of this {}", what);
+  const std::string_view action = split ? "splits into convex pieces" : "evaluates with CGAL";
+  std::size_t triangles = 0;
+  for (const TriangleMesh& mesh : solids.meshes) triangles += mesh.triangles.size();
+  if (triangles > kMaxDecomposedTriangles)
+    throw SceneError(call.loc, fmt::format("{} is not supported: it has {} triangles, more than the {} capsim {}",
+                                           subject, triangles, kMaxDecomposedTriangles, action));
+  ConvexPieces pieces = solid_pieces(solids, split);
+  if (!pieces.corners)
+    throw SceneError(call.loc, fmt::format("{} is not supported: {}; CGAL {} only a 2-manifold that does not cross "
+                                           "itself",
+                                           subject, pieces.reason, split ? "splits" : "evaluates"));
+  for (const auto& piece : *pieces.corners) add_part(piece, m, out);
+}
+
 // The solid a mesh bounds, less those of `holes` (inside it), placed by m:
 // its points as one part (the holes' lie within), or, when `split` and the
 // solid is not convex, its convex pieces. `what` names it in a refusal.
 void add_solid(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>& holes, const glm::dmat4& m,
                bool split, const Call& call, std::string_view what, Parts& out) {
   if (!split || (holes.empty() && is_convex(mesh))) return add_part(mesh.vertices, m, out);
-  std::size_t triangles = mesh.triangles.size();
-  for (const TriangleMesh* hole : holes) triangles += hole->triangles.size();
-  if (triangles > kMaxDecomposedTriangles)
-    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex {} is not supported: it has {} "
-                                           "triangles, more than the {} capsim splits into convex pieces",
-                                           what, triangles, kMaxDecomposedTriangles));
-  ConvexPieces pieces = convex_pieces(mesh, holes);
-  if (!pieces.corners)
-    throw SceneError(call.loc, fmt::format("minkowski() of this non-convex {} is not supported: {}; capsim "
-                                           "sums its convex pieces, which CGAL finds only for a 2-manifold that "
-                                           "does not cross itself",
-                                           what, pieces.reason));
-  for (const auto& piece : *pieces.corners) add_part(piece, m, out);
+  MeshedSolids solid;
+  solid.meshes.push_back(mesh);
+  solid.root.op = CsgOp::Difference;
+  for (const TriangleMesh* hole : holes) solid.meshes.push_back(*hole);
+  for (std::size_t k = 0; k < solid.meshes.size(); ++k) {
+    CsgNode& leaf = solid.root.children.emplace_back();
+    leaf.is_leaf = true;
+    leaf.primitive = static_cast<int>(k);
+  }
+  add_evaluated(solid, m, split, call, what, out);
+}
+
+// A difference, intersection or rotate_extrude as OpenSCAD meshes and
+// evaluates it, placed by m. Without a difference or intersection in it, its
+// meshes' points are its points (a hull's one part) and a convex mesh is a
+// part of its own; anything else is left to CGAL.
+void add_meshed(const Call& call, const FileAccess& files, const glm::dmat4& m, bool split, Parts& out) {
+  const MeshedSolids solids = read_meshed_solids(std::span(&call, 1), files, {"hull() or minkowski()", "meshes"});
+  if (only_unions(solids.root)) {
+    if (!split) {
+      for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
+      return;
+    }
+    if (std::all_of(solids.meshes.begin(), solids.meshes.end(), is_convex)) {
+      for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
+      return;
+    }
+  }
+  add_evaluated(solids, m, split, call, fmt::format("{}()", call.name), out);
 }
 
 void add_mesh(const Primitive& p, const glm::dmat4& m, bool split, const Call& call, Parts& out) {
@@ -138,8 +180,9 @@ class PointCollector {
     } else if (n == "minkowski") {
       read_hull_arguments(call);
       for (const auto& part : summed_parts(call, files_)) add_part(part, m, out);
-    } else if (n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror") {
-      const glm::dmat4 inner = m * read_transform(call);
+    } else if (n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror" ||
+               n == "resize") {
+      const glm::dmat4 inner = m * (n == "resize" ? read_resize(call, files_) : read_transform(call));
       for (const Call& child : call.children) collect(child, inner, out);
     } else if (n == "union" || n == "group" || n == "render" || n == "color" || n == "material") {
       if (n == "color") {
@@ -150,15 +193,13 @@ class PointCollector {
         read_pass_through(call);
       }
       for (const Call& child : call.children) collect(child, m, out);
-    } else if (n == "difference" || n == "intersection") {
-      throw SceneError(call.loc, fmt::format("{}() under hull() or minkowski() is not supported: its points are "
-                                             "those of the solid it evaluates, and capsim traces CSG exactly without "
-                                             "ever meshing it",
-                                             n));
+    } else if (n == "difference" || n == "intersection" || n == "rotate_extrude") {
+      add_meshed(call, files_, m, split_, out);
     } else {
       throw SceneError(call.loc, fmt::format("{}() under hull() or minkowski() is not supported: capsim takes the "
                                              "points of sphere, cube, cylinder, polyhedron, import, surface, hull, "
-                                             "minkowski and linear_extrude, under transforms, union, color and render",
+                                             "minkowski, linear_extrude and rotate_extrude, under transforms, resize, "
+                                             "union, difference, intersection, color and render",
                                              n));
     }
   }

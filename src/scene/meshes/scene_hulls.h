@@ -23,16 +23,21 @@ struct FileAccess {
 
 // hull(): the convex hull of every point of its children, exact for the
 // children's meshes (a sphere is OpenSCAD's polyhedron of it, not the true
-// sphere). Refused when the children give no volume (none, or all their
-// points in one plane), and at a child whose points are not known without
-// evaluating CSG (difference, intersection), that is 2-D or a rotate_extrude.
+// sphere). A difference or intersection gives the corners of the solid
+// CGAL evaluates it to from OpenSCAD's meshes (scene/meshes/meshed_solids.h),
+// a rotate_extrude those of OpenSCAD's mesh of it. Refused when the children
+// give no volume (none, or all their points in one plane), at a 2-D child,
+// and at a difference or intersection CGAL cannot evaluate or of more than
+// kMaxDecomposedTriangles triangles.
 Primitive read_hull(const Call& call, const FileAccess& files);
 
 // minkowski(): the Minkowski sum of its children, as OpenSCAD makes it. The
 // sum distributes over union, so each child is taken as convex parts (each
 // solid of a union; a non-convex polyhedron, import, surface or
-// linear_extrude, each outline of the extrusion less its holes, split into
-// convex pieces by CGAL, scene/meshes/convex_decomposition.h) and the sum is
+// linear_extrude, each outline of the extrusion less its holes, a
+// rotate_extrude, and the solid a difference or intersection evaluates to,
+// split into convex pieces by CGAL, scene/meshes/convex_decomposition.h,
+// as OpenSCAD splits them) and the sum is
 // the union of the hulls of the point sums of every choice of one part per
 // child: one convex mesh leaf each (exact for the children's meshes).
 // Refused: what hull() refuses, a non-convex solid CGAL cannot split (not a

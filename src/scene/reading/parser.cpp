@@ -25,6 +25,7 @@
 #include "scene/meshes/scene_hulls.h"
 #include "scene/reading/scene_lexer.h"
 #include "scene/meshes/scene_meshes.h"
+#include "scene/meshes/scene_resize.h"
 #include "scene/reading/scene_modules.h"
 #include "scene/meshes/scene_surface.h"
 #include "scene/extrusions/scene_revolve.h"
@@ -38,14 +39,14 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection and import (DXF, SVG), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection, hull, minkowski and import (DXF, SVG), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, resize, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
   return n == "sphere" || n == "cube" || n == "cylinder" || n == "polyhedron" || n == "import" || n == "surface";
 }
 bool is_transform(std::string_view n) {
-  return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror";
+  return n == "multmatrix" || n == "translate" || n == "rotate" || n == "scale" || n == "mirror" || n == "resize";
 }
 // Solids built out of their children's points (scene_hulls.h).
 bool is_point_hull(std::string_view n) { return n == "hull" || n == "minkowski"; }
@@ -62,10 +63,6 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   if (is_shape_2d(n))
     return "a 2-D shape is drawn only extruded, under linear_extrude(); capsim renders solids, and a 2-D shape "
            "alone has none";
-  for (std::string_view m : {"hull", "minkowski"}) {
-    if (n == m) return "capsim takes hull() and minkowski() of solids, not of 2-D shapes";
-  }
-  if (n == "resize") return "resizing to the children's bounds is not supported; use scale()";
   for (std::string_view m : {"children", "parent_module", "import_stl", "import_off", "import_dxf",
                              "dxf_linear_extrude", "dxf_rotate_extrude"}) {
     if (n == m) return "it is not part of a plain CSG tree";
@@ -80,7 +77,7 @@ std::optional<std::string_view> unsupported_reason(std::string_view n) {
   }
   std::vector<std::string> known;
   for (std::string_view n : {"sphere", "cube", "cylinder", "polyhedron", "import", "surface", "hull", "minkowski", "linear_extrude", "rotate_extrude", "offset", "projection", "multmatrix", "translate", "rotate",
-                             "scale", "mirror", "union", "difference", "intersection", "group",
+                             "scale", "mirror", "resize", "union", "difference", "intersection", "group",
                              "render", "color", "material", "camera", "light", "background"}) {
     known.emplace_back(n);
   }
@@ -324,7 +321,9 @@ class Interpreter {
   // onto contexts_.
   [[gnu::noinline]] ContextId enter(const Call& call, ContextId ctx) {
     Context inner = contexts_[ctx];
-    if (is_transform(call.name)) {
+    if (call.name == "resize") {
+      inner.transform = inner.transform * resize_matrix(call);
+    } else if (is_transform(call.name)) {
       inner.transform = inner.transform * scene_file::read_transform(call);
     } else if (call.name == "color") {
       scene_file::ColorSetting c = scene_file::read_color(call);
@@ -335,6 +334,17 @@ class Interpreter {
     }
     contexts_.push_back(inner);
     return contexts_.size() - 1;
+  }
+
+  // resize() among solids, or of a 2-D design drawn flat (its x and y).
+  [[gnu::noinline]] glm::dmat4 resize_matrix(const Call& call) const {
+    const scene_file::FileAccess files{import_dir_, max_file_bytes_};
+    if (!starts_2d(call)) return scene_file::read_resize(call, files);
+    const glm::dmat3 plane = scene_file::read_resize_2d(call, files);
+    glm::dmat4 m(1.0);
+    m[0][0] = plane[0][0];
+    m[1][1] = plane[1][1];
+    return m;
   }
 
   std::vector<CsgNode> children(const Call& call, ContextId ctx) {
@@ -603,7 +613,8 @@ class Interpreter {
     }
     glm::dmat3 inner = plane;
     if (is_transform(name)) {
-      inner = plane * scene_file::read_transform_2d(call);
+      inner = plane * (name == "resize" ? scene_file::read_resize_2d(call, {import_dir_, max_file_bytes_})
+                                        : scene_file::read_transform_2d(call));
     } else if (name == "color") {
       scene_file::read_color(call);  // the extrusion is drawn in the colour around it
     } else if (name == "material") {
@@ -639,7 +650,7 @@ class Interpreter {
     const std::string_view name = call.name;
     if (is_shape_2d(name) || name == "offset" || name == "projection") return true;
     if (name == "import") return scene_file::is_2d_import(call);
-    if (name == "difference" || name == "intersection") return starts_2d(call);
+    if (name == "difference" || name == "intersection" || is_point_hull(name)) return starts_2d(call);
     return false;
   }
 
@@ -652,7 +663,8 @@ class Interpreter {
       if (dropped) continue;
       if (is_shape_2d(child.name) || child.name == "offset" || child.name == "projection") return true;
       if (child.name == "import") return scene_file::is_2d_import(child);
-      const bool passes = is_transform(child.name) || child.name == "union" || child.name == "difference" ||
+      const bool passes = is_transform(child.name) || is_point_hull(child.name) || child.name == "union" ||
+                          child.name == "difference" ||
                           child.name == "intersection" || child.name == "group" || child.name == "render" ||
                           child.name == "color" || child.name == "material";
       return passes && starts_2d(child);

@@ -182,31 +182,44 @@ bool Args::boolean(std::string_view name, bool fallback) const {
 }
 
 glm::dvec3 Args::vec3(std::string_view name, glm::dvec3 fallback) const {
-  if (!has(name)) return fallback;
-  const Value& v = value(name);
-  if (v.kind != Value::Kind::Vector || v.items.size() != 3)
-    fail_type(name, "a vector of 3 numbers");
-  glm::dvec3 out;
-  for (int i = 0; i < 3; ++i) {
-    const Value& item = v.items[i];
-    if (item.kind != Value::Kind::Number) {
-      throw SceneError(item.loc,
-                       fmt::format("{} must be a vector of 3 numbers, but element {} is {}",
-                                   what(name), i + 1, describe(item)));
-    }
-    out[i] = item.number;
-  }
-  return out;
+  return has(name) ? numbers(name, 3, 0) : fallback;
+}
+
+glm::dvec3 Args::vec2_or_3(std::string_view name, glm::dvec3 fallback, double z) const {
+  return has(name) ? numbers(name, 2, z) : fallback;
 }
 
 glm::dvec3 Args::number_or_vec3(std::string_view name, glm::dvec3 fallback) const {
   if (!has(name)) return fallback;
   const Value& v = value(name);
   if (v.kind == Value::Kind::Number) return glm::dvec3(v.number);
-  if (v.kind != Value::Kind::Vector || v.items.size() != 3) {
-    fail_type(name, "a number or a vector of 3 numbers");
+  if (v.kind != Value::Kind::Vector || v.items.size() != 3) fail_type(name, "a number or a vector of 3 numbers");
+  return numbers(name, 3, 0);
+}
+
+glm::dvec3 Args::number_or_vec2_or_3(std::string_view name, glm::dvec3 fallback, double z) const {
+  if (!has(name)) return fallback;
+  const Value& v = value(name);
+  if (v.kind == Value::Kind::Number) return glm::dvec3(v.number);
+  if (v.kind != Value::Kind::Vector || v.items.size() < 2 || v.items.size() > 3)
+    fail_type(name, "a number or a vector of 2 or 3 numbers");
+  return numbers(name, 2, z);
+}
+
+glm::dvec3 Args::numbers(std::string_view name, std::size_t least, double z) const {
+  const Value& v = value(name);
+  const std::string expected = least == 3 ? "a vector of 3 numbers" : "a vector of 2 or 3 numbers";
+  if (v.kind != Value::Kind::Vector || v.items.size() > 3 || v.items.size() < least) fail_type(name, expected);
+  glm::dvec3 out(0, 0, z);
+  for (std::size_t i = 0; i < v.items.size(); ++i) {
+    const Value& item = v.items[i];
+    if (item.kind != Value::Kind::Number) {
+      throw SceneError(item.loc, fmt::format("{} must be {}, but element {} is {}", what(name), expected, i + 1,
+                                             describe(item)));
+    }
+    out[static_cast<int>(i)] = item.number;
   }
-  return vec3(name, fallback);
+  return out;
 }
 
 }  // namespace capsim::scene_file

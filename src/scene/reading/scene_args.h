@@ -34,9 +34,15 @@ class Args {
   double number(std::string_view name, double fallback) const;
   bool boolean(std::string_view name, bool fallback) const;
   glm::dvec3 vec3(std::string_view name, glm::dvec3 fallback) const;
+  // A vector of 3 numbers, or of 2 with `z` for the third, as OpenSCAD's
+  // translate, scale and mirror read [x, y] (Value::getVec3's default).
+  glm::dvec3 vec2_or_3(std::string_view name, glm::dvec3 fallback, double z) const;
 
   // A number or a vector of 3 numbers: the scalar case repeats the number.
   glm::dvec3 number_or_vec3(std::string_view name, glm::dvec3 fallback) const;
+  // A number or a vector of 2 or 3 numbers (the third `z` when 2), as
+  // OpenSCAD's scale reads it.
+  glm::dvec3 number_or_vec2_or_3(std::string_view name, glm::dvec3 fallback, double z) const;
 
   // "argument 'r' of sphere"
   std::string what(std::string_view name) const;
@@ -44,6 +50,9 @@ class Args {
   [[noreturn]] void fail_type(std::string_view name, std::string_view expected) const;
 
  private:
+  // The argument as a vector of `least` (2 or 3) to 3 numbers, the third
+  // `z` when it has 2. Precondition: has(name).
+  glm::dvec3 numbers(std::string_view name, std::size_t least, double z) const;
   // One accepted parameter and the argument bound to it, if any.
   struct Param {
     std::string_view name;

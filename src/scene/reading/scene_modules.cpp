@@ -293,7 +293,7 @@ glm::dmat4 read_rotate(const Call& call) {
   }
   const Value& a = args.value("a");
   if (a.kind == Value::Kind::Vector) {
-    glm::dvec3 angles = args.vec3("a", glm::dvec3(0));
+    glm::dvec3 angles = args.vec2_or_3("a", glm::dvec3(0), 0);
     if (args.has("v")) {
       throw SceneError(args.name_loc("v"),
                        "rotate: 'v' (an axis) is used only with a scalar angle 'a', not with a "
@@ -301,7 +301,7 @@ glm::dmat4 read_rotate(const Call& call) {
     }
     return euler_rotation(angles);
   }
-  if (a.kind != Value::Kind::Number) args.fail_type("a", "a number or a vector of 3 numbers");
+  if (a.kind != Value::Kind::Number) args.fail_type("a", "a number or a vector of 2 or 3 numbers");
   glm::dvec3 axis = args.vec3("v", {0, 0, 1});
   std::optional<glm::dvec3> k = unit_vector(axis);
   if (!k)
@@ -312,7 +312,7 @@ glm::dmat4 read_rotate(const Call& call) {
 
 glm::dmat4 read_scale(const Call& call) {
   Args args(call, {"v"});
-  glm::dvec3 s = args.number_or_vec3("v", glm::dvec3(1));
+  glm::dvec3 s = args.number_or_vec2_or_3("v", glm::dvec3(1), 1);
   if (s.x == 0 || s.y == 0 || s.z == 0) {
     args.fail_value("v",
                     fmt::format("singular transform: scale {} flattens space (every factor must "
@@ -330,7 +330,7 @@ glm::dmat4 read_scale(const Call& call) {
 
 glm::dmat4 read_mirror(const Call& call) {
   Args args(call, {"v"});
-  glm::dvec3 v = args.vec3("v", {1, 0, 0});
+  glm::dvec3 v = args.vec2_or_3("v", {1, 0, 0}, 0);
   std::optional<glm::dvec3> unit = unit_vector(v);
   if (!unit) {
     args.fail_value("v", fmt::format("singular transform: mirror {} has no plane normal (the "
@@ -389,7 +389,7 @@ Primitive read_primitive(const Call& call) {
 glm::dmat4 read_transform(const Call& call) {
   if (call.name == "translate") {
     Args args(call, {"v"});
-    return translation(args.vec3("v", glm::dvec3(0)));
+    return translation(args.vec2_or_3("v", glm::dvec3(0), 0));
   }
   if (call.name == "rotate") return read_rotate(call);
   if (call.name == "scale") return read_scale(call);

@@ -121,4 +121,74 @@ Polygon2d apply_offset(const Polygon2d& shape, double delta, ClipperLib::JoinTyp
   return from_clipper(result);
 }
 
+namespace {
+
+// The quadrilaterals that sweep outline `a` along every edge of outline `b`
+// (both closed), each turned counter-clockwise: their union is the band the
+// boundary of a + b lies in. Clipper's MinkowskiSum would also unite them;
+// OpenSCAD unites them once with the insides instead, so that rounding in a
+// first union cannot open cracks.
+void add_swept_quads(const ClipperLib::Path& a, const ClipperLib::Path& b, ClipperLib::Paths& out) {
+  if (a.empty() || b.empty()) return;
+  std::vector<ClipperLib::Path> moved(b.size());  // a placed at each corner of b
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    moved[i].reserve(a.size());
+    for (const ClipperLib::IntPoint& p : a) moved[i].emplace_back(b[i].X + p.X, b[i].Y + p.Y);
+  }
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const ClipperLib::Path& here = moved[i];
+    const ClipperLib::Path& next = moved[(i + 1) % b.size()];
+    for (std::size_t j = 0; j < a.size(); ++j) {
+      const std::size_t k = (j + 1) % a.size();
+      ClipperLib::Path quad{here[j], next[j], next[k], here[k]};
+      if (!ClipperLib::Orientation(quad)) ClipperLib::ReversePath(quad);
+      out.push_back(std::move(quad));
+    }
+  }
+}
+
+// The swept band leaves the middle of the sum empty where a component of
+// one shape is larger than the other's outlines: the other shape placed at
+// any one corner of each solid (counter-clockwise) outline of the first
+// fills it, and lies within the sum.
+void add_insides(const ClipperLib::Paths& shape, const ClipperLib::Paths& placed_at, ClipperLib::Paths& out) {
+  for (const ClipperLib::Path& at : placed_at) {
+    if (at.empty() || !ClipperLib::Orientation(at)) continue;
+    for (const ClipperLib::Path& path : shape) {
+      ClipperLib::Path& copy = out.emplace_back(path);
+      for (ClipperLib::IntPoint& p : copy) {
+        p.X += at.front().X;
+        p.Y += at.front().Y;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+Polygon2d minkowski_sum(const std::vector<Polygon2d>& shapes) {
+  if (shapes.size() == 1) return shapes.front();
+  ClipperLib::Clipper clipper;
+  ClipperLib::Paths sum = to_clipper(shapes.front());
+  ClipperLib::PolyTree result;
+  for (std::size_t i = 1; i < shapes.size(); ++i) {
+    const ClipperLib::Paths next = to_clipper(shapes[i]);
+    ClipperLib::Paths terms;
+    for (const ClipperLib::Path& b : next)
+      for (const ClipperLib::Path& a : sum) add_swept_quads(a, b, terms);
+    add_insides(sum, next, terms);
+    add_insides(next, sum, terms);
+    clipper.Clear();
+    run_clipper([&] {
+      clipper.AddPaths(terms, ClipperLib::ptSubject, true);
+      if (i + 1 == shapes.size()) {
+        clipper.Execute(ClipperLib::ctUnion, result, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      } else {
+        clipper.Execute(ClipperLib::ctUnion, sum, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+      }
+    });
+  }
+  return from_clipper(result);
+}
+
 }  // namespace capsim::scene_file

@@ -57,6 +57,13 @@ Polygon2d clip_shapes(const std::vector<Polygon2d>& shapes, ClipperLib::ClipType
 Polygon2d apply_offset(const Polygon2d& shape, double delta, ClipperLib::JoinType join, double miter_limit,
                        double arc_tolerance);
 
+// The Minkowski sum of 2-D shapes, as OpenSCAD 2021.01's applyMinkowski
+// forms it: pairwise from the first, each step the union (non-zero rule) of
+// the quadrilaterals one shape's outlines sweep along the other's edges and
+// of each shape placed inside the other's solid outlines. Precondition: at
+// least one shape.
+Polygon2d minkowski_sum(const std::vector<Polygon2d>& shapes);
+
 // The outlines as Clipper paths, orientation kept when sanitized, else
 // every outline turned counter-clockwise (ClipperUtils::fromPolygon2d).
 ClipperLib::Paths to_clipper(const Polygon2d& shape);

@@ -143,7 +143,7 @@ Intervals subtract(const Intervals& a, const Intervals& b) {
 // Whether a point of the plane belongs to the projection.
 class Membership {
  public:
-  Membership(const ProjectedSolids& solids, bool cut) : solids_(solids), cut_(cut) {
+  Membership(const MeshedSolids& solids, bool cut) : solids_(solids), cut_(cut) {
     for (const TriangleMesh& m : solids.meshes) meshes_.emplace_back(m);
   }
 
@@ -180,7 +180,7 @@ class Membership {
     return acc;
   }
 
-  const ProjectedSolids& solids_;
+  const MeshedSolids& solids_;
   bool cut_;
   std::vector<MeshFromAbove> meshes_;
   std::vector<double> zs_;
@@ -267,7 +267,7 @@ std::vector<glm::dvec2> restore_corners(std::vector<glm::dvec2> loop, double sho
 
 }  // namespace
 
-std::vector<std::vector<glm::dvec2>> project_solids(const ProjectedSolids& solids, bool cut) {
+std::vector<std::vector<glm::dvec2>> project_solids(const MeshedSolids& solids, bool cut) {
   Aabb box;
   for (const TriangleMesh& m : solids.meshes)
     if (!m.triangles.empty()) box.extend(m.bounds);

@@ -18,6 +18,7 @@
 // side of the solids' box.
 
 #include "capsim/scene.h"
+#include "scene/meshes/meshed_solids.h"
 
 #include <glm/glm.hpp>
 
@@ -27,14 +28,9 @@ namespace capsim::scene_file {
 
 inline constexpr int kProjectionGrid = 512;
 
-struct ProjectedSolids {
-  std::vector<TriangleMesh> meshes;  // CsgNode::primitive indexes these, in the projection's space
-  CsgNode root;
-};
-
 // Closed paths, none crossing another, under the even-odd rule; empty when
 // the shadow or section is empty. Deterministic: the same solids give the
 // same paths.
-std::vector<std::vector<glm::dvec2>> project_solids(const ProjectedSolids& solids, bool cut);
+std::vector<std::vector<glm::dvec2>> project_solids(const MeshedSolids& solids, bool cut);
 
 }  // namespace capsim::scene_file

@@ -6,11 +6,13 @@
 
 #include "capsim/scene.h"
 #include "scene/regions/dxf_import.h"
+#include "scene/regions/hull_2d.h"
 #include "scene/meshes/mesh_files.h"
 #include "scene/reading/scene_args.h"
 #include "scene/reading/scene_expression.h"
 #include "scene/extrusions/scene_extrusion.h"
 #include "scene/meshes/scene_meshes.h"
+#include "scene/meshes/scene_resize.h"
 #include "scene/reading/scene_modules.h"
 #include "scene/regions/svg_import.h"
 #include "scene/regions/text_glyphs.h"
@@ -245,6 +247,29 @@ class Evaluator {
       if (s->sanitized && det <= 0) *s = sanitize(*s);
       return s;
     }
+    if (name == "resize") {
+      // OpenSCAD's Polygon2d::resize: the factors from the box of the
+      // children's outlines, about the origin.
+      const ResizeSpec spec = read_resize_spec(call);
+      std::optional<Polygon2d> s = union_of_children(call);
+      if (!s) return s;
+      Aabb box;
+      for (const Outline2d& o : s->outlines)
+        for (const glm::dvec2& p : o.vertices) box.extend(glm::dvec3(p, 0));
+      const glm::dvec3 f = resize_factors(spec, box.empty() ? glm::dvec3(0) : box.hi - box.lo, 2);
+      glm::dmat3 m(1.0);
+      m[0][0] = f.x;
+      m[1][1] = f.y;
+      transform(*s, m);
+      return s;
+    }
+    if (name == "hull" || name == "minkowski") {
+      Args args(call, {}, {"convexity"});
+      args.number("convexity", 1);
+      const std::vector<Polygon2d> kids = children(call);
+      if (kids.empty()) return std::nullopt;
+      return name == "hull" ? hull_2d(kids) : minkowski_sum(kids);
+    }
     if (name == "offset") {
       const OffsetSpec spec = read_offset(call);
       std::optional<Polygon2d> s = union_of_children(call);
@@ -262,8 +287,8 @@ class Evaluator {
       return combine(call, name == "difference" ? ClipperLib::ctDifference : ClipperLib::ctIntersection);
     }
     throw SceneError(call.loc, fmt::format("{}() is not a 2-D shape: 2-D subtrees hold square, circle, polygon, "
-                                           "text, import (DXF, SVG), offset, their transforms, union, difference "
-                                           "and intersection",
+                                           "text, import (DXF, SVG), projection, offset, hull, minkowski, their "
+                                           "transforms and resize, union, difference and intersection",
                                            name));
   }
 
@@ -298,7 +323,8 @@ bool is_2d_import(const Call& call) {
 }
 
 bool needs_clipping(const Call& call) {
-  if (call.name == "offset" || call.name == "projection") return true;
+  if (call.name == "offset" || call.name == "projection" || call.name == "hull" || call.name == "minkowski")
+    return true;
   if (call.name == "import") return is_2d_import(call);
   if (call.name == "polygon") return paths_meet(read_polygon_paths(call, glm::dmat3(1.0)).paths);
   return false;
