@@ -24,6 +24,7 @@ struct PrepareOptions {
   // OpenSCAD's camera options: when given, they choose the camera, over the
   // scene's camera statement (openscad_camera on openscad_preview_bounds).
   std::optional<OpenScadCameraOptions> openscad;
+  int threads = 0;  // host threads for voxel generation (0 = all); the grid does not depend on it
 };
 
 struct PreparedScene {

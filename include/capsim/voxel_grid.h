@@ -71,9 +71,11 @@ Aabb universe_of(const std::vector<PreparedPrimitive>& prims, const std::vector<
 // The primitive's world axis-aligned bounds act as extra circumscribing planes.
 // Conservative: every voxel the primitive's surface touches holds it. Throws
 // VoxelGridTooLarge rather than hold more than kMaxVoxelEntries entries.
+// Primitives are placed on `threads` host threads (0 = all); the grid, the
+// counts and the refusal are the same for every count.
 VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
                           const std::vector<bool>& placed, const Aabb& universe, int n,
-                          VoxelGenCounts* counts);
+                          VoxelGenCounts* counts, int threads = 1);
 
 // Algorithm-3's operations primitive by primitive, as generate_voxels counts
 // them: element i holds primitive i's (all zero where it is not placed), with

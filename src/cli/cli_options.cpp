@@ -219,6 +219,7 @@ std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed
   PrepareOptions prepare = s.prepare;
   prepare.width = size.width;
   prepare.height = size.height;
+  prepare.threads = s.threads;
   std::vector<PreparedScene> prepared;
   prepared.reserve(scenes.size());
   for (Scene& scene : scenes) prepared.push_back(prepare_scene(std::move(scene), prepare));

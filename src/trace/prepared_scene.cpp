@@ -101,7 +101,7 @@ PreparedScene prepare_scene(Scene scene, const PrepareOptions& options) {
   check_scene_range(scene, ps.prims, ps.placed, universe);
   const int n = options.grid > 0 ? options.grid : fitted_grid_divisions(ps.prims, ps.placed, universe);
   try {
-    ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts);
+    ps.grid = generate_voxels(ps.prims, ps.placed, universe, n, &ps.voxel_counts, options.threads);
   } catch (const VoxelGridTooLarge& e) {
     // The automatic divisions keep within the limit by their bounding-box
     // count, which is never below generate_voxels' own.

@@ -4,11 +4,14 @@
 
 #include "capsim/voxel_grid.h"
 
+#include "capsim/host_threads.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <span>
 
 namespace capsim {
 
@@ -139,6 +142,11 @@ bool rect_meets_hull(const glm::dvec2& lo, const glm::dvec2& hi, const std::vect
 
 int clamp_index(double v, int n) { return clamped_voxel_index(v, n); }
 
+// Primitives per range of the parallel placement: enough that a range's
+// scheduling is small against placing it, few enough that the smallest
+// lattices (125 balls) still give every thread work.
+constexpr std::size_t kPrimitivesPerRange = 32;
+
 // The voxel entries of one primitive, as (voxel index) appended to out.
 void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm::dvec3& vs,
                      double eps, std::vector<std::uint32_t>& out, VoxelGenCounts* counts) {
@@ -223,16 +231,18 @@ void place_bounding_box(const Aabb& b, const Aabb& u, int n, const glm::dvec3& v
       for (int x = lo.x; x <= hi.x; ++x) out.push_back(static_cast<std::uint32_t>((z * n + y) * n + x));
 }
 
-// Every primitive's voxels, primitives in file order, in one array: primitive
-// p's are voxels[start[p]] up to voxels[start[p + 1]].
+// The voxels of the primitives first, first + 1, ... in one array: primitive
+// first + p's are voxels[start[p]] up to voxels[start[p + 1]].
 struct Placements {
+  std::size_t first = 0;
   std::vector<std::uint32_t> voxels;
   std::vector<std::size_t> start{0};
   void end_primitive() { start.push_back(voxels.size()); }
 };
 
-// Compressed rows from the placements, primitives ascending in each voxel.
-VoxelGrid build_grid(const Aabb& universe, int n, const Placements& placed) {
+// Compressed rows from the placements of consecutive primitive ranges, in
+// primitive order: primitives ascending in each voxel, whatever the ranges.
+VoxelGrid build_grid(const Aabb& universe, int n, std::span<const Placements> ranges) {
   VoxelGrid g;
   g.universe = universe;
   g.n = n;
@@ -240,14 +250,16 @@ VoxelGrid build_grid(const Aabb& universe, int n, const Placements& placed) {
   g.inv_voxel_size = static_cast<double>(n) / universe.extent();
   const std::size_t cells = static_cast<std::size_t>(n) * n * n;
   g.offsets.assign(cells + 1, 0);
-  for (std::uint32_t v : placed.voxels) ++g.offsets[v + 1];
+  for (const Placements& placed : ranges)
+    for (std::uint32_t v : placed.voxels) ++g.offsets[v + 1];
   g.largest_voxel = *std::max_element(g.offsets.begin(), g.offsets.end());
   for (std::size_t v = 0; v < cells; ++v) g.offsets[v + 1] += g.offsets[v];
   g.items.resize(g.offsets[cells]);
   std::vector<std::uint32_t> fill(g.offsets.begin(), g.offsets.end() - 1);
-  for (std::size_t p = 0; p + 1 < placed.start.size(); ++p)
-    for (std::size_t k = placed.start[p]; k < placed.start[p + 1]; ++k)
-      g.items[fill[placed.voxels[k]]++] = static_cast<std::uint32_t>(p);
+  for (const Placements& placed : ranges)
+    for (std::size_t p = 0; p + 1 < placed.start.size(); ++p)
+      for (std::size_t k = placed.start[p]; k < placed.start[p + 1]; ++k)
+        g.items[fill[placed.voxels[k]]++] = static_cast<std::uint32_t>(placed.first + p);
   return g;
 }
 
@@ -272,23 +284,40 @@ Aabb universe_of(const std::vector<PreparedPrimitive>& prims, const std::vector<
 
 VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
                           const std::vector<bool>& placed, const Aabb& universe, int n,
-                          VoxelGenCounts* counts) {
+                          VoxelGenCounts* counts, int threads) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
   const double eps = grid_epsilon(universe);
-  Placements placements;
-  placements.start.reserve(prims.size() + 1);
-  for (std::size_t i = 0; i < prims.size(); ++i) {
-    if (placed[i]) place_primitive(prims[i], universe, n, vs, eps, placements.voxels, counts);
-    placements.end_primitive();
-    if (placements.voxels.size() > kMaxVoxelEntries) {
-      throw VoxelGridTooLarge(fmt::format(
-          "a voxel grid of {0}x{0}x{0} would hold more than {1} (voxel, primitive) entries, "
-          "the most capsim allows",
-          n, kMaxVoxelEntries));
+  // Ranges of a fixed size, placed in parallel: the grid is built from them in
+  // primitive order, so it is the same for every thread count. Where the
+  // bounding boxes, an upper bound of the entries, might pass the limit, one
+  // range, so that placing stops at the primitive that passes it rather than
+  // after every thread's range.
+  const bool fits = bounding_box_entries(prims, placed, universe, n) <= kMaxVoxelEntries;
+  const std::size_t range_size = fits ? kPrimitivesPerRange : std::max<std::size_t>(prims.size(), 1);
+  const std::size_t range_count = (prims.size() + range_size - 1) / range_size;
+  std::vector<Placements> ranges(range_count);
+  std::vector<VoxelGenCounts> range_counts(range_count);
+  parallel_rows(threads, static_cast<int>(range_count), [&](const tbb::blocked_range<int>& rs) {
+    for (int r = rs.begin(); r != rs.end(); ++r) {
+      Placements& out = ranges[r];
+      out.first = static_cast<std::size_t>(r) * range_size;
+      const std::size_t last = std::min(prims.size(), out.first + range_size);
+      out.start.reserve(last - out.first + 1);
+      for (std::size_t i = out.first; i < last; ++i) {
+        if (placed[i]) place_primitive(prims[i], universe, n, vs, eps, out.voxels, &range_counts[r]);
+        out.end_primitive();
+        if (out.voxels.size() > kMaxVoxelEntries) {
+          throw VoxelGridTooLarge(fmt::format(
+              "a voxel grid of {0}x{0}x{0} would hold more than {1} (voxel, primitive) entries, "
+              "the most capsim allows",
+              n, kMaxVoxelEntries));
+        }
+      }
     }
-  }
-  VoxelGrid g = build_grid(universe, n, placements);
+  });
+  VoxelGrid g = build_grid(universe, n, ranges);
   if (counts) {
+    for (const VoxelGenCounts& c : range_counts) *counts += c;
     counts->voxel_entries += g.entries();
     counts->grid_voxels += static_cast<std::uint64_t>(n) * static_cast<std::uint64_t>(n) * static_cast<std::uint64_t>(n);
   }
@@ -321,7 +350,7 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
     if (placed[i]) place_bounding_box(prims[i].world_bounds, universe, n, vs, eps, placements.voxels);
     placements.end_primitive();
   }
-  return build_grid(universe, n, placements);
+  return build_grid(universe, n, std::span<const Placements>(&placements, 1));
 }
 
 std::size_t bounding_box_entries(const std::vector<PreparedPrimitive>& prims,
