@@ -10,6 +10,8 @@
 #include "capsim/revolution_geometry.h"
 #include "capsim/scene.h"
 
+#include <cmath>
+
 namespace capsim {
 
 // A primitive ready for tracing: the inverse transform and the normal matrix are
@@ -64,6 +66,37 @@ struct LineSpan {
 // cost, as in the paper's Table 4-1, includes carrying the ray into object space.
 bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& span,
                     OpCounts& ops);
+
+// |o + t d|^2 = r2, solved about the line's closest point to the centre,
+// p = o + tc d with tc = -(o . d) / a: it becomes a (t - tc)^2 = r2 - |p|^2,
+// which keeps its digits when the origin is far away (b^2 - a c would cancel).
+// Most tests miss, and the miss test needs no division: with q = a p =
+// a o - (o . d) d, the line meets the sphere where a^2 r2 > |q|^2. The test
+// of a round sphere (o = the ray's origin less the centre) and of the unit
+// sphere in object space.
+inline bool intersect_round_sphere(const glm::dvec3& o, const glm::dvec3& d, double r2, LineSpan& s) {
+  const double a = glm::dot(d, d);
+  const double b = glm::dot(o, d);
+  const glm::dvec3 q = a * o - b * d;
+  const double excess = a * a * r2 - glm::dot(q, q);  // a^2 (r2 - |p|^2)
+  if (!(excess > 0)) return false;
+  const double tc = -b / a;
+  const double h = std::sqrt(excess / a) / a;  // sqrt((r2 - |p|^2) / a)
+  s = {tc - h, tc + h, 0, 0};
+  return s.t_enter < s.t_exit;
+}
+
+// A round sphere's centre and squared radius, packed for the voxel walk: the
+// walk reads a voxel's spheres from these 32 bytes each, not from their
+// PreparedPrimitives (several hundred bytes apart, most of a crowded
+// voxel's time went to fetching them). r2 < 0: the primitive is not a round
+// sphere. intersect_round_sphere(origin - center, dir, r2) is, to the bit,
+// intersect_line's test of the primitive.
+struct RoundSphereSlot {
+  glm::dvec3 center{0};
+  double r2 = -1;
+};
+RoundSphereSlot round_sphere_slot(const PreparedPrimitive& p);
 
 // The crossings of the whole line origin + t dir with a Mesh (mesh_line_crossings):
 // sorted, entries and exits alternating from an entry. Counts one mesh test (the

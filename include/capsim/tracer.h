@@ -94,6 +94,7 @@ class Tracer {
   bool orthographic_ = false;
   double epsilon_ = 0;  // offset of spawned rays, relative to the universe size
   bool crowded_voxels_ = false;  // the walk must watch for crowded voxels
+  std::vector<RoundSphereSlot> spheres_;  // per primitive, as scene_.prims
 };
 
 }  // namespace capsim

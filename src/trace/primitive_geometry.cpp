@@ -40,23 +40,6 @@ bool slab(double o, double d, double a, double b, double& t0, double& t1) {
   return true;
 }
 
-// |o + t d|^2 = r2, solved about the line's closest point to the centre,
-// p = o + tc d with tc = -(o . d) / a: it becomes a (t - tc)^2 = r2 - |p|^2,
-// which keeps its digits when the origin is far away (b^2 - a c would cancel).
-// Most tests miss, and the miss test needs no division: with q = a p =
-// a o - (o . d) d, the line meets the sphere where a^2 r2 > |q|^2.
-bool intersect_round_sphere(const glm::dvec3& o, const glm::dvec3& d, double r2, LineSpan& s) {
-  const double a = glm::dot(d, d);
-  const double b = glm::dot(o, d);
-  const glm::dvec3 q = a * o - b * d;
-  const double excess = a * a * r2 - glm::dot(q, q);  // a^2 (r2 - |p|^2)
-  if (!(excess > 0)) return false;
-  const double tc = -b / a;
-  const double h = std::sqrt(excess / a) / a;  // sqrt((r2 - |p|^2) / a)
-  s = {tc - h, tc + h, 0, 0};
-  return s.t_enter < s.t_exit;
-}
-
 // The unit sphere in object space.
 bool intersect_sphere(const glm::dvec3& o, const glm::dvec3& d, LineSpan& s) {
   return intersect_round_sphere(o, d, 1.0, s);
@@ -178,6 +161,11 @@ PreparedPrimitive prepare_primitive(const Primitive& prim) {
     p.radius = std::sqrt(g[0][0]);
   }
   return p;
+}
+
+RoundSphereSlot round_sphere_slot(const PreparedPrimitive& p) {
+  if (!p.round_sphere) return {};
+  return {p.center, p.radius * p.radius};
 }
 
 bool intersect_line(const PreparedPrimitive& p, const Ray& world_ray, LineSpan& span,

@@ -72,35 +72,58 @@ void meet_many_intervals(std::uint32_t p, const PreparedPrimitive& prim, const R
   if (inside_at_start) s.tree.toggle(p, ops);
 }
 
+// A convex primitive's span along the ray: one the ray starts in toggles
+// its leaf at once, every crossing ahead goes to `add`.
+template <typename AddCrossing>
+void take_span(std::uint32_t p, const LineSpan& span, const Ray& ray, Tracer::Scratch& s, OpCounts& ops,
+               AddCrossing add) {
+  if (span.t_exit <= ray.tmin || span.t_enter >= ray.tmax) return;
+  if (span.t_enter <= ray.tmin) {
+    // The ray starts inside this primitive: its leaf is inside from the
+    // start. Every such primitive holds the start point, so it is met in the
+    // first voxel, before any crossing is evaluated.
+    s.tree.toggle(p, ops);
+  } else {
+    add(Crossing{span.t_enter, p, span.enter_surface, true});
+    ++ops.hits_sorted;
+  }
+  if (span.t_exit < ray.tmax) {
+    add(Crossing{span.t_exit, p, span.exit_surface, false});
+    ++ops.hits_sorted;
+  }
+}
+
+// A round sphere, from its packed slot.
+template <typename AddCrossing>
+void meet_round_sphere(std::uint32_t p, const RoundSphereSlot& sphere, const Ray& ray, Tracer::Scratch& s,
+                       OpCounts& ops, AddCrossing add) {
+  LineSpan span;
+  if (intersect_round_sphere(ray.origin - sphere.center, ray.dir, sphere.r2, span)) take_span(p, span, ray, s, ops, add);
+}
+
+// Any primitive but a round sphere.
+template <typename AddCrossing>
+void meet_other(std::uint32_t p, const PreparedPrimitive& prim, const Ray& ray, Tracer::Scratch& s, OpCounts& ops,
+                AddCrossing add) {
+  if (has_many_intervals(prim.kind)) return meet_many_intervals(p, prim, ray, s, ops, add);
+  LineSpan span;
+  if (intersect_line(prim, ray, span, ops)) take_span(p, span, ray, s, ops, add);
+}
+
 // Intersects the primitives of one voxel that the ray has not met yet (the
-// mailbox): a primitive the ray starts in toggles its leaf at once, every
-// crossing ahead goes to `add`.
+// mailbox), in the voxel's order.
 template <typename AddCrossing>
 void meet_primitives(std::span<const std::uint32_t> voxel,
-                     const std::vector<PreparedPrimitive>& prims, const Ray& ray,
-                     Tracer::Scratch& s, OpCounts& ops, AddCrossing add) {
+                     const std::vector<PreparedPrimitive>& prims, const std::vector<RoundSphereSlot>& spheres,
+                     const Ray& ray, Tracer::Scratch& s, OpCounts& ops, AddCrossing add) {
   for (const std::uint32_t p : voxel) {
     if (s.mailbox[p] == s.stamp) continue;
     s.mailbox[p] = s.stamp;
-    if (has_many_intervals(prims[p].kind)) {
-      meet_many_intervals(p, prims[p], ray, s, ops, add);
-      continue;
-    }
-    LineSpan span;
-    if (!intersect_line(prims[p], ray, span, ops)) continue;
-    if (span.t_exit <= ray.tmin || span.t_enter >= ray.tmax) continue;
-    if (span.t_enter <= ray.tmin) {
-      // The ray starts inside this primitive: its leaf is inside from the
-      // start. Every such primitive holds the start point, so it is met in the
-      // first voxel, before any crossing is evaluated.
-      s.tree.toggle(p, ops);
+    if (const RoundSphereSlot& sphere = spheres[p]; sphere.r2 >= 0) {
+      ++ops.sphere_tests;
+      meet_round_sphere(p, sphere, ray, s, ops, add);
     } else {
-      add(Crossing{span.t_enter, p, span.enter_surface, true});
-      ++ops.hits_sorted;
-    }
-    if (span.t_exit < ray.tmax) {
-      add(Crossing{span.t_exit, p, span.exit_surface, false});
-      ++ops.hits_sorted;
+      meet_other(p, prims[p], ray, s, ops, add);
     }
   }
 }
@@ -113,8 +136,9 @@ constexpr std::size_t kCrowdedVoxel = 8;
 
 [[gnu::noinline]] void meet_crowded_voxel(std::span<const std::uint32_t> voxel,
                                           const std::vector<PreparedPrimitive>& prims,
-                                          const Ray& ray, Tracer::Scratch& s, OpCounts& ops) {
-  meet_primitives(voxel, prims, ray, s, ops, [&](const Crossing& c) { s.fresh.push_back(c); });
+                                          const std::vector<RoundSphereSlot>& spheres, const Ray& ray,
+                                          Tracer::Scratch& s, OpCounts& ops) {
+  meet_primitives(voxel, prims, spheres, ray, s, ops, [&](const Crossing& c) { s.fresh.push_back(c); });
   merge_fresh(s.pending, s.fresh);
 }
 
@@ -157,6 +181,8 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   half_width_ = half_height_ * static_cast<double>(c.width) / c.height;
   epsilon_ = scene_epsilon(scene);
   crowded_voxels_ = scene.grid.largest_voxel > kCrowdedVoxel;
+  spheres_.reserve(scene.prims.size());
+  for (const PreparedPrimitive& p : scene.prims) spheres_.push_back(round_sphere_slot(p));
 }
 
 Ray Tracer::screen_ray(double u, double v) const {
@@ -196,9 +222,9 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
     const std::span<const std::uint32_t> voxel = grid.voxel(dda.voxel());
     if (!voxel.empty()) ++ops.voxel_passes;  // Algorithm-4 applied in this voxel (§2.3)
     if (kMayBeCrowded && voxel.size() > kCrowdedVoxel) {
-      meet_crowded_voxel(voxel, scene_.prims, ray, s, ops);
+      meet_crowded_voxel(voxel, scene_.prims, spheres_, ray, s, ops);
     } else {
-      meet_primitives(voxel, scene_.prims, ray, s, ops,
+      meet_primitives(voxel, scene_.prims, spheres_, ray, s, ops,
                       [&](const Crossing& c) { insert_sorted(s.pending, c); });
     }
     // Evaluate, nearest first, the crossings inside this voxel; later ones wait

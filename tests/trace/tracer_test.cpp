@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -35,6 +36,36 @@ TEST(PrimitiveGeometry, SphereSpanIsExact) {
   EXPECT_EQ(ops.sphere_tests, 1u);
   EXPECT_FALSE(intersect_line(p, ray({3.5, 2, -10}, {0, 0, 1}), s, ops));
   EXPECT_EQ(ops.sphere_tests, 2u);
+}
+
+// The walk tests a round sphere from its packed slot: the same span, to
+// the bit, as intersect_line's test of the primitive, on random spheres
+// (near and far, tiny and huge) and rays; a sphere that is not round in
+// world space has no slot.
+TEST(PrimitiveGeometry, RoundSphereSlotsTestAsThePrimitive) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> unit(-1, 1), scale(-12, 12);
+  for (int k = 0; k < 20000; ++k) {
+    const glm::dvec3 centre = glm::dvec3(unit(rng), unit(rng), unit(rng)) * std::pow(10.0, scale(rng) / 3);
+    const PreparedPrimitive p = prepare_primitive(sphere(centre, std::pow(10.0, scale(rng) / 4)));
+    const RoundSphereSlot slot = round_sphere_slot(p);
+    ASSERT_GE(slot.r2, 0);
+    const glm::dvec3 origin = centre + glm::dvec3(unit(rng), unit(rng), unit(rng)) * std::pow(10.0, scale(rng) / 3);
+    const glm::dvec3 aim = centre + glm::dvec3(unit(rng), unit(rng), unit(rng)) * std::pow(10.0, scale(rng) / 4);
+    if (aim == origin) continue;
+    const Ray r = ray(origin, glm::normalize(aim - origin));
+    LineSpan by_primitive, by_slot;
+    OpCounts ops;
+    const bool met = intersect_line(p, r, by_primitive, ops);
+    EXPECT_EQ(intersect_round_sphere(r.origin - slot.center, r.dir, slot.r2, by_slot), met) << k;
+    if (!met) continue;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(by_slot.t_enter), std::bit_cast<std::uint64_t>(by_primitive.t_enter)) << k;
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(by_slot.t_exit), std::bit_cast<std::uint64_t>(by_primitive.t_exit)) << k;
+  }
+  Primitive squashed = sphere({0, 0, 0}, 1);
+  squashed.to_world[2][2] = 2;
+  EXPECT_LT(round_sphere_slot(prepare_primitive(squashed)).r2, 0);
+  EXPECT_LT(round_sphere_slot(prepare_primitive(box({0, 0, 0}, {1, 1, 1}))).r2, 0);
 }
 
 TEST(PrimitiveGeometry, BoxSpanNamesTheFaces) {
