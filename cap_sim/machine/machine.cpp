@@ -91,32 +91,38 @@ SimulationResult run_frame(const PreparedScene& scene, const WindowLayout& layou
 }
 
 namespace {
-SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const MachineConfig& config,
-                               int threads, bool show_progress);
-}  // namespace
 
-SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const MachineConfig& config,
-                                 int threads, bool show_progress) {
-  if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
-  check_balance(config);
-  // Refuse a unit that does not fit before spending time tracing it; frame
-  // averaged, the units' size decides the frames' dot shifts, so it is
-  // resolved first.
-  std::vector<SceneFootprint> footprints;
-  for (const Tracer* t : frames) footprints.push_back(scene_footprint(t->scene()));
-  const Camera& cam = frames[0]->scene().camera;
-  const MachineConfig resolved = resolve_units(footprints, config, cam.width, cam.height);
+// How the cells trace the corners antialiasing shares: each window that
+// needs one when the windows are dealt on demand (their owners are not
+// known ahead), else only the corner's owner.
+CornerTracing corner_tracing(const MachineConfig& config) {
+  return config.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner;
+}
+
+// The pixels of a chunk a neighbour may steal; 0 without stealing.
+int steal_chunk(const MachineConfig& config) {
+  return config.balance.stealing() ? config.balance.chunk_pixels : 0;
+}
+
+// The event loop over the traced frames: serial; composing the screens uses
+// the same host threads.
+SimulationResult run_on_host_threads(std::vector<FrameWork> work, const MachineConfig& config, int threads) {
+  tbb::task_arena arena(host_arena_concurrency(threads));
+  return arena.execute([&] { return run_frames(std::move(work), config); });
+}
+
+// `run()`, a cycle count too large to hold named by the profile whose costs
+// made it so (the scenes are valid).
+template <typename Run>
+SimulationResult naming_overflow(const CostProfile& profile, Run&& run) {
   try {
-    return trace_and_run(frames, resolved, threads, show_progress);
+    return run();
   } catch (const CycleOverflow& e) {
-    // The scenes are valid; the profile's costs make their time too long to count.
-    const CostProfile& profile = config.profile;
     throw e.of_profile(profile.source.empty() ? profile.name : profile.source, profile.clock_hz);
   }
 }
 
-namespace {
-
+// Every frame traced for its cells (the camera's size for all), then run.
 SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const MachineConfig& config,
                                int threads, bool show_progress) {
   const Camera& cam = frames[0]->scene().camera;
@@ -135,19 +141,29 @@ SimulationResult trace_and_run(const std::vector<const Tracer*>& frames, const M
       const WindowLayout layout = frame_layout(config, cam.width, cam.height, static_cast<int>(f));
       std::vector<TracedCell> traced =
           trace_cells(tracer, layout, config.profile.costs, threads, one ? &progress : nullptr, config.aa,
-                      config.screen, config.completion_cycles,
-                      config.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner,
-                      config.balance.stealing() ? config.balance.chunk_pixels : 0);
+                      config.screen, config.completion_cycles, corner_tracing(config), steal_chunk(config));
       work.push_back(frame_work(tracer.scene(), layout, std::move(traced), config));
       if (!one) progress.advance(1);
     }
   }
-  // The event loop is serial; composing the screens uses the same host threads.
-  tbb::task_arena arena(host_arena_concurrency(threads));
-  return arena.execute([&] { return run_frames(std::move(work), config); });
+  return run_on_host_threads(std::move(work), config, threads);
 }
 
 }  // namespace
+
+SimulationResult simulate_frames(const std::vector<const Tracer*>& frames, const MachineConfig& config,
+                                 int threads, bool show_progress) {
+  if (frames.empty()) throw std::invalid_argument("a run needs at least one frame");
+  check_balance(config);
+  // Refuse a unit that does not fit before spending time tracing it; frame
+  // averaged, the units' size decides the frames' dot shifts, so it is
+  // resolved first.
+  std::vector<SceneFootprint> footprints;
+  for (const Tracer* t : frames) footprints.push_back(scene_footprint(t->scene()));
+  const Camera& cam = frames[0]->scene().camera;
+  const MachineConfig resolved = resolve_units(footprints, config, cam.width, cam.height);
+  return naming_overflow(config.profile, [&] { return trace_and_run(frames, resolved, threads, show_progress); });
+}
 
 SimulationResult simulate_frame(const Tracer& tracer, const MachineConfig& config, int threads,
                                 bool show_progress) {
@@ -160,21 +176,16 @@ SimulationResult simulate_traced_frame(const ScreenTrace& screen, const MachineC
   check_balance(config);
   const PreparedScene& scene = screen.tracer->scene();
   const MachineConfig resolved = resolve_units({scene_footprint(scene)}, config, screen.width, screen.height);
-  try {
+  return naming_overflow(config.profile, [&] {
     const WindowLayout layout = frame_layout(resolved, screen.width, screen.height, 0);
     std::vector<FrameWork> work;
-    work.push_back(frame_work(
-        scene, layout,
-        trace_cells(screen, layout, resolved.profile.costs, threads, resolved.screen, resolved.completion_cycles,
-                    resolved.balance.on_demand() ? CornerTracing::ByEveryWindowThatNeedsIt : CornerTracing::ByOwner,
-                    resolved.balance.stealing() ? resolved.balance.chunk_pixels : 0),
-        resolved));
-    tbb::task_arena arena(host_arena_concurrency(threads));
-    return arena.execute([&] { return run_frames(std::move(work), resolved); });
-  } catch (const CycleOverflow& e) {
-    const CostProfile& profile = config.profile;
-    throw e.of_profile(profile.source.empty() ? profile.name : profile.source, profile.clock_hz);
-  }
+    work.push_back(frame_work(scene, layout,
+                              trace_cells(screen, layout, resolved.profile.costs, threads, resolved.screen,
+                                          resolved.completion_cycles, corner_tracing(resolved),
+                                          steal_chunk(resolved)),
+                              resolved));
+    return run_on_host_threads(std::move(work), resolved, threads);
+  });
 }
 
 }  // namespace capsim::sim
