@@ -15,6 +15,10 @@ struct TraceOptions {
   bool primary_only = false;  // primary rays with local shading only: no shadow,
                               // reflection or refraction rays
   int max_depth = 5;          // reflection/refraction recursion limit
+  // Tests only: crowded voxels of round spheres test every sphere in turn
+  // instead of first asking the voxel's bounding volumes (tracer.cpp), the
+  // reference the filtered walk must equal.
+  bool unfiltered_crowded_voxels = false;
 };
 
 // The visible surface along a ray: the first crossing where the root status of the
@@ -56,6 +60,7 @@ class Tracer {
     std::vector<Crossing> pending;  // crossings met but not yet evaluated, latest first
     std::vector<Crossing> fresh;    // crossings met in the current voxel, not yet in pending
     std::vector<LineCrossing> leaf_crossings, leaf_work;  // one mesh's crossings, and its hits
+    std::vector<std::uint32_t> candidates;  // a filtered voxel's spheres the line may meet
   };
 
   Tracer(const PreparedScene& scene, TraceOptions options);
@@ -78,11 +83,27 @@ class Tracer {
   const PreparedScene& scene() const { return scene_; }
   const TraceOptions& options() const { return options_; }
 
+  // A crowded voxel made only of round spheres: a bounding-volume hierarchy
+  // over their boxes, which names the spheres a line may meet (tracer.cpp).
+  struct SphereFilter {
+    struct Node {
+      glm::dvec3 lo, hi;
+      std::uint32_t first = 0;  // leaf: its first entry in `order`; inner: its right child
+      std::uint32_t count = 0;  // leaf: its spheres; 0: inner, its left child next
+    };
+    int voxel = 0;
+    std::vector<Node> nodes;  // nodes[0] is the root
+    std::vector<std::uint32_t> order;  // positions in the voxel's list, leaf by leaf
+    glm::dvec3 center{0};  // of the spheres' box, and
+    double reach = 0;      // its half diagonal: the scale of the filter's rounding margin
+  };
+
  private:
   // first_hit's walk; kMayBeCrowded: some voxel holds so many primitives that
   // their crossings are merged into the pending ones at once (tracer.cpp).
   template <bool kMayBeCrowded>
   bool walk(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
+  const SphereFilter* filter(int voxel) const;  // the voxel's, if it has one
   glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, Hit* first) const;
   bool occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
                 OpCounts& ops) const;
@@ -95,6 +116,7 @@ class Tracer {
   double epsilon_ = 0;  // offset of spawned rays, relative to the universe size
   bool crowded_voxels_ = false;  // the walk must watch for crowded voxels
   std::vector<RoundSphereSlot> spheres_;  // per primitive, as scene_.prims
+  std::vector<SphereFilter> filters_;     // in ascending voxel order
 };
 
 }  // namespace capsim

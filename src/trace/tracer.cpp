@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 
 namespace capsim {
@@ -142,6 +143,138 @@ constexpr std::size_t kCrowdedVoxel = 8;
   merge_fresh(s.pending, s.fresh);
 }
 
+// A voxel of this many round spheres or more (the paper's lattices on coarse
+// grids put up to 6,859 in one) has a SphereFilter: a line meets few of
+// them, and testing each in turn took most of `capsim repro`'s time.
+constexpr std::size_t kFilteredVoxel = 32;
+constexpr std::uint32_t kFilterLeaf = 4;
+using SphereFilter = Tracer::SphereFilter;
+
+// The filter of a voxel whose entries are all round spheres, or none. Median
+// splits along the longest axis of the centres keep the depth at most
+// log2 of the spheres, well within traverse()'s stack.
+std::optional<SphereFilter> build_sphere_filter(int v, std::span<const std::uint32_t> voxel,
+                                                const std::vector<RoundSphereSlot>& spheres) {
+  std::vector<Aabb> boxes;
+  boxes.reserve(voxel.size());
+  for (const std::uint32_t p : voxel) {
+    const RoundSphereSlot& slot = spheres[p];
+    if (slot.r2 < 0) return std::nullopt;
+    const double r = std::sqrt(slot.r2);
+    boxes.push_back(Aabb{slot.center - r, slot.center + r});
+  }
+  SphereFilter f;
+  f.voxel = v;
+  f.order.resize(voxel.size());
+  for (std::uint32_t k = 0; k < f.order.size(); ++k) f.order[k] = k;
+  const auto bounds = [&](std::uint32_t first, std::uint32_t count) {
+    Aabb b{boxes[f.order[first]].lo, boxes[f.order[first]].hi};
+    for (std::uint32_t k = first + 1; k < first + count; ++k) {
+      b.lo = glm::min(b.lo, boxes[f.order[k]].lo);
+      b.hi = glm::max(b.hi, boxes[f.order[k]].hi);
+    }
+    return b;
+  };
+  const auto build = [&](auto& self, std::uint32_t first, std::uint32_t count) -> void {
+    const std::uint32_t node = static_cast<std::uint32_t>(f.nodes.size());
+    const Aabb b = bounds(first, count);
+    f.nodes.push_back({b.lo, b.hi, first, count});
+    if (count <= kFilterLeaf) return;
+    glm::dvec3 lo = boxes[f.order[first]].center(), hi = lo;
+    for (std::uint32_t k = first + 1; k < first + count; ++k) {
+      lo = glm::min(lo, boxes[f.order[k]].center());
+      hi = glm::max(hi, boxes[f.order[k]].center());
+    }
+    const glm::dvec3 spread = hi - lo;
+    const int axis = spread.x >= spread.y && spread.x >= spread.z ? 0 : (spread.y >= spread.z ? 1 : 2);
+    const std::uint32_t half = count / 2;
+    const auto begin = f.order.begin() + first;
+    std::nth_element(begin, begin + half, begin + count, [&](std::uint32_t a, std::uint32_t b) {
+      const double ca = boxes[a].center()[axis], cb = boxes[b].center()[axis];
+      return ca != cb ? ca < cb : a < b;
+    });
+    f.nodes[node].count = 0;
+    self(self, first, half);
+    f.nodes[node].first = static_cast<std::uint32_t>(f.nodes.size());
+    self(self, first + half, count - half);
+  };
+  build(build, 0, static_cast<std::uint32_t>(voxel.size()));
+  f.center = 0.5 * (f.nodes[0].lo + f.nodes[0].hi);
+  f.reach = 0.5 * glm::length(f.nodes[0].hi - f.nodes[0].lo);
+  return f;
+}
+
+// Calls visit(k) for every position k of the filter's voxel whose sphere's box,
+// grown by `margin` on every side, the whole line origin + t dir meets.
+template <typename Visit>
+void traverse(const SphereFilter& f, const Ray& ray, double margin, Visit visit) {
+  glm::dvec3 inv;
+  bool parallel[3];
+  for (int i = 0; i < 3; ++i) {
+    inv[i] = 1.0 / ray.dir[i];
+    // A direction component too small to invert leaves the line within the
+    // margin of its slab's plane over the whole filter: tested by the origin.
+    parallel[i] = !std::isfinite(inv[i]);
+  }
+  const auto meets = [&](const SphereFilter::Node& n) {
+    double near = -kInfinity, far = kInfinity;
+    for (int i = 0; i < 3; ++i) {
+      const double lo = n.lo[i] - margin, hi = n.hi[i] + margin;
+      if (parallel[i]) {
+        if (!(ray.origin[i] >= lo && ray.origin[i] <= hi)) return false;
+        continue;
+      }
+      const double t1 = (lo - ray.origin[i]) * inv[i], t2 = (hi - ray.origin[i]) * inv[i];
+      near = std::max(near, std::min(t1, t2));
+      far = std::min(far, std::max(t1, t2));
+    }
+    return near <= far;
+  };
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const SphereFilter::Node& n = f.nodes[stack[--top]];
+    if (!meets(n)) continue;
+    if (n.count == 0) {
+      const std::uint32_t here = static_cast<std::uint32_t>(&n - f.nodes.data());
+      stack[top++] = n.first;
+      stack[top++] = here + 1;
+    } else {
+      for (std::uint32_t k = n.first; k < n.first + n.count; ++k) visit(f.order[k]);
+    }
+  }
+}
+
+// meet_crowded_voxel for a voxel with a filter, to the bit: the same
+// crossings in the same order, the same toggles, counts and stamps. Every
+// sphere the ray has not met yet counts as a test, as the machine makes one;
+// only those the filter names are intersected, in the voxel's order.
+// The margin covers the rounding of the filter's boxes and slab tests and of
+// intersect_round_sphere, each within a few ulps of the coordinates' scale
+// (the origin's, the spheres'); a sphere whose exact test succeeds is never
+// passed over.
+[[gnu::noinline]] void meet_filtered_voxel(std::span<const std::uint32_t> voxel, const SphereFilter& f,
+                                           const std::vector<RoundSphereSlot>& spheres, const Ray& ray,
+                                           Tracer::Scratch& s, OpCounts& ops) {
+  const double scale = glm::length(ray.origin) + glm::length(f.center) + f.reach;
+  std::vector<std::uint32_t>& candidates = s.candidates;
+  candidates.clear();
+  traverse(f, ray, 1e-8 * scale, [&](std::uint32_t k) {
+    if (s.mailbox[voxel[k]] != s.stamp) candidates.push_back(k);
+  });
+  std::uint64_t unmet = 0;
+  for (const std::uint32_t p : voxel) {
+    unmet += s.mailbox[p] != s.stamp;
+    s.mailbox[p] = s.stamp;
+  }
+  ops.sphere_tests += unmet;
+  std::sort(candidates.begin(), candidates.end());
+  const auto add = [&](const Crossing& c) { s.fresh.push_back(c); };
+  for (const std::uint32_t k : candidates) meet_round_sphere(voxel[k], spheres[voxel[k]], ray, s, ops, add);
+  merge_fresh(s.pending, s.fresh);
+}
+
 // x^e for the Phong highlight. Whole exponents (as materials usually give) go by
 // repeated squaring, a few multiplications where pow() costs some seventy
 // instructions per light per hit; others fall back to pow().
@@ -183,6 +316,19 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   crowded_voxels_ = scene.grid.largest_voxel > kCrowdedVoxel;
   spheres_.reserve(scene.prims.size());
   for (const PreparedPrimitive& p : scene.prims) spheres_.push_back(round_sphere_slot(p));
+  if (!crowded_voxels_ || options.unfiltered_crowded_voxels || scene.grid.largest_voxel < kFilteredVoxel) return;
+  const VoxelGrid& grid = scene.grid;
+  const int voxels = grid.n * grid.n * grid.n;
+  for (int v = 0; v < voxels; ++v) {
+    if (grid.offsets[v + 1] - grid.offsets[v] < kFilteredVoxel) continue;
+    if (auto f = build_sphere_filter(v, grid.voxel(v), spheres_)) filters_.push_back(std::move(*f));
+  }
+}
+
+const Tracer::SphereFilter* Tracer::filter(int v) const {
+  const auto it = std::lower_bound(filters_.begin(), filters_.end(), v,
+                                   [](const SphereFilter& f, int voxel) { return f.voxel < voxel; });
+  return it != filters_.end() && it->voxel == v ? &*it : nullptr;
 }
 
 Ray Tracer::screen_ray(double u, double v) const {
@@ -222,7 +368,12 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
     const std::span<const std::uint32_t> voxel = grid.voxel(dda.voxel());
     if (!voxel.empty()) ++ops.voxel_passes;  // Algorithm-4 applied in this voxel (§2.3)
     if (kMayBeCrowded && voxel.size() > kCrowdedVoxel) {
-      meet_crowded_voxel(voxel, scene_.prims, spheres_, ray, s, ops);
+      const SphereFilter* f = voxel.size() >= kFilteredVoxel ? filter(dda.voxel()) : nullptr;
+      if (f) {
+        meet_filtered_voxel(voxel, *f, spheres_, ray, s, ops);
+      } else {
+        meet_crowded_voxel(voxel, scene_.prims, spheres_, ray, s, ops);
+      }
     } else {
       meet_primitives(voxel, scene_.prims, spheres_, ray, s, ops,
                       [&](const Crossing& c) { insert_sorted(s.pending, c); });
