@@ -144,12 +144,18 @@ std::vector<TracedCell> empty_cells(const WindowLayout& layout, ScreenFormat for
   return cells;
 }
 
-// Stores pixel k of a cell's video memory in its format.
-void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) {
-  if (format == ScreenFormat::Srgb8)
-    encode_srgb8_row({&px, 1}, cell.srgb8.data() + static_cast<std::size_t>(k) * 3);
-  else
+// Stores pixel k of a cell's video memory in its format. srgb8: the pixel's
+// 8-bit encoding when it is known already, else null.
+void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format, const unsigned char* srgb8) {
+  if (format == ScreenFormat::Float) {
     set_pixel(cell.samples, k, 0, px);
+    return;
+  }
+  unsigned char* out = cell.srgb8.data() + static_cast<std::size_t>(k) * 3;
+  if (srgb8)
+    std::copy(srgb8, srgb8 + 3, out);
+  else
+    encode_srgb8_row({&px, 1}, out);
 }
 
 // Where trace_cells' samples and operations come from: the tracer, tracing
@@ -158,6 +164,7 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format) 
 struct TracingNow {
   const Tracer& tracer;
   PixelSample pixel(int x, int y, Tracer::Scratch& s, OpCounts& ops) const { return tracer.trace_pixel(x, y, s, ops); }
+  const unsigned char* srgb8(int, int) const { return nullptr; }
   CornerSamples corners(int threads, const CornerCostSink& cost, Progress* progress) const {
     return trace_corners(tracer, threads, cost, progress);
   }
@@ -174,6 +181,7 @@ struct TracedAhead {
     ops += screen.pixel_ops[at(x, y)];
     return screen.pixels[at(x, y)];
   }
+  const unsigned char* srgb8(int x, int y) const { return screen.srgb8.data() + at(x, y) * 3; }
   // The corners' costs handed on in row order, on this thread.
   CornerSamples corners(int, const CornerCostSink& cost, Progress* progress) const {
     for (int y = 0; y <= screen.height; ++y)
@@ -251,12 +259,18 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
         const PixelOwner own = owners.owner(x, y);
         const ScreenSample c[4] = {corners.at(x, y), corners.at(x + 1, y), corners.at(x, y + 1),
                                    corners.at(x + 1, y + 1)};
+        TracedCell& out = cells[own.cell];
+        ++sum.items[own.cell];
+        if (!floats && !keep_write_cycles && chunk_pixels <= 0) {
+          // resolve adds its operations to the cell's sum directly.
+          store(out, own.video_index, source.resolve(x, y, c, aa, s, sum.ops[own.cell]).value, format,
+                source.srgb8(x, y));
+          continue;
+        }
         OpCounts ops;
         const AntialiasedPixel px = source.resolve(x, y, c, aa, s, ops);
-        TracedCell& out = cells[own.cell];
-        store(out, own.video_index, px.value, format);
+        store(out, own.video_index, px.value, format, source.srgb8(x, y));
         sum.add(own, ops, chunk_pixels);
-        ++sum.items[own.cell];
         if (!floats && !keep_write_cycles) continue;
         const std::uint64_t subdivision = saturated_cycles(ops, costs);
         if (keep_write_cycles) out.write_cycles[own.video_index] = subdivision;
@@ -323,11 +337,11 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
         ++sum.items[owner.cell];
         if (!floats && !keep_write_cycles && chunk_pixels <= 0) {
           // trace_pixel adds its operations to the cell's sum directly.
-          store(out, owner.video_index, source.pixel(x, y, s, sum.ops[owner.cell]), format);
+          store(out, owner.video_index, source.pixel(x, y, s, sum.ops[owner.cell]), format, source.srgb8(x, y));
           continue;
         }
         OpCounts ops;
-        store(out, owner.video_index, source.pixel(x, y, s, ops), format);
+        store(out, owner.video_index, source.pixel(x, y, s, ops), format, source.srgb8(x, y));
         const std::uint64_t cycles = saturated_cycles(ops, costs);
         if (floats) out.pixel_cycles[owner.video_index] = cycles;
         if (keep_write_cycles) out.write_cycles[owner.video_index] = cycles;
@@ -406,12 +420,14 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
         t.subdivision_samples[i] = static_cast<std::uint32_t>(px.subdivision_samples);
       }
   });
+  t.srgb8.resize(pixels * 3);
+  encode_srgb8_row(t.pixels, t.srgb8.data());
   return t;
 }
 
 std::uint64_t screen_trace_memory(int width, int height, const AntialiasOptions& aa) {
   const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
-  std::uint64_t bytes = pixels * (sizeof(PixelSample) + sizeof(OpCounts));
+  std::uint64_t bytes = pixels * (sizeof(PixelSample) + 3 + sizeof(OpCounts));
   if (aa.depth > 0)
     bytes += pixels * sizeof(std::uint32_t) +
              static_cast<std::uint64_t>(width + 1) * static_cast<std::uint64_t>(height + 1) *

@@ -82,6 +82,7 @@ struct ScreenTrace {
   AntialiasOptions aa;
   int width = 0, height = 0;
   std::vector<PixelSample> pixels;
+  std::vector<unsigned char> srgb8;  // the pixels as an 8-bit screen stores them, 3 bytes each
   std::vector<OpCounts> pixel_ops;
   std::vector<std::uint32_t> subdivision_samples;  // antialiased
   CornerSamples corners;                           // antialiased

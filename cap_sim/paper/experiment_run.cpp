@@ -104,10 +104,12 @@ const ScreenTrace& ScreenTraces::trace(const RunSpec& spec, int threads) {
   return kept_->screen;
 }
 
-RunFigures run_experiment(const RunSpec& spec, int threads, ScreenTraces* traces) {
+namespace {
+
+// The run, from `screen` when it is traced ahead, else tracing it now.
+RunFigures run(const RunSpec& spec, int threads, const ScreenTrace* screen) {
   std::optional<PreparedScene> own_scene;
   std::optional<Tracer> own_tracer;
-  const ScreenTrace* screen = traces ? &traces->trace(spec, threads) : nullptr;
   if (!screen) {
     own_scene.emplace(prepared_scene(spec));
     own_tracer.emplace(*own_scene, trace_options(spec));
@@ -145,6 +147,16 @@ RunFigures run_experiment(const RunSpec& spec, int threads, ScreenTraces* traces
   f.steal_link_bytes = r.steal_links.bytes;
   f.grid_divisions = scene.grid.n;
   return f;
+}
+
+}  // namespace
+
+RunFigures run_experiment(const RunSpec& spec, int threads, ScreenTraces* traces) {
+  return run(spec, threads, traces ? &traces->trace(spec, threads) : nullptr);
+}
+
+RunFigures run_experiment(const RunSpec& spec, int threads, const ScreenTrace& screen) {
+  return run(spec, threads, &screen);
 }
 
 }  // namespace capsim::sim

@@ -92,4 +92,10 @@ class ScreenTraces {
 // nor on whether `traces` (may be null) held its screen already.
 RunFigures run_experiment(const RunSpec& spec, int threads, ScreenTraces* traces = nullptr);
 
+// Runs it from a screen traced ahead. Precondition: `screen` is the trace
+// ScreenTraces::trace gives for spec (the same scene, size, grid,
+// primary_only and antialiasing). It only reads the screen, so runs of one
+// screen may go at once on different threads.
+RunFigures run_experiment(const RunSpec& spec, int threads, const ScreenTrace& screen);
+
 }  // namespace capsim::sim

@@ -2,11 +2,14 @@
 
 #include "report/svg_plot.h"
 
+#include "capsim/host_threads.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 
 namespace capsim::sim {
 
@@ -59,10 +62,15 @@ ModesBench run_modes_bench(const ModesBenchOptions& options) {
   ModesBench b;
   b.options = options;
   b.options.log = nullptr;
-  // A model's runs at one antialiasing depth trace the same screen: once.
+  // A model's runs at one antialiasing depth trace the same screen: it is
+  // traced once, on every thread, and its twenty runs then go on the host
+  // threads at once, each on one (their figures do not depend on it).
   ScreenTraces traces;
+  std::mutex log_lock;
   for (const std::string& file : modes_bench_models())
-    for (int aa : modes_bench_aa_depths())
+    for (int aa : modes_bench_aa_depths()) {
+      std::vector<RunSpec> specs;
+      const std::size_t first = b.runs.size();
       for (const std::string& scheme : modes_bench_schemes())
         for (const CellGrid& grid : modes_bench_grids()) {
           ModeRun r;
@@ -81,10 +89,21 @@ ModesBench run_modes_bench(const ModesBenchOptions& options) {
           r.model = model_name(file);
           r.cells = grid;
           r.aa_depth = aa;
-          if (options.log) options.log(run_name(r.model, scheme, to_string(grid), aa));
-          r.figures = run_experiment(s, options.threads, &traces);
+          specs.push_back(std::move(s));
           b.runs.push_back(std::move(r));
         }
+      const ScreenTrace& screen = traces.trace(specs[0], options.threads);
+      parallel_rows(options.threads, static_cast<int>(specs.size()), [&](const tbb::blocked_range<int>& range) {
+        for (int k = range.begin(); k != range.end(); ++k) {
+          ModeRun& r = b.runs[first + static_cast<std::size_t>(k)];
+          if (options.log) {
+            const std::lock_guard<std::mutex> hold(log_lock);
+            options.log(run_name(r.model, r.scheme(), to_string(r.cells), aa));
+          }
+          r.figures = run_experiment(specs[static_cast<std::size_t>(k)], 1, screen);
+        }
+      });
+    }
   // Speed-up against the same model, antialiasing and scheme on the first grid (4x4).
   for (ModeRun& r : b.runs) {
     const auto base = std::find_if(b.runs.begin(), b.runs.end(), [&](const ModeRun& o) {

@@ -138,7 +138,7 @@ class Cell {
   Mailbox<LinkMessage> link_inbox_;
   std::vector<LinkMessage> early_;  // horizontal messages that came before the vertical ones
   std::vector<BusTransfer> early_shares_;  // other cells' voxel shares of a later step or frame
-  std::vector<CornerIndex> unit_received_;  // corners taken in during this unit's exchange
+  std::vector<CornerIndex> unit_received_;  // corners taken in during this unit's exchange, ascending
   std::vector<TracedCell> video_;   // per frame: traced ahead, its video memory once traced (static)
   Cycles last_request_;  // on demand: when its latest request left
   // Stealing: its unstarted chunks of the frame it works on are front to
