@@ -17,13 +17,13 @@ constexpr int kSlots = 1024;  // a sequence stages one output per frame
 
 enum SlotState : int { kFree, kFilling, kArmed };
 
-struct Slot {
-  std::atomic<int> state{kFree};
-  char path[PATH_MAX];
-};
+// The states apart from the paths, and zero (kFree) by constant
+// initialization: nothing touches the 4 MiB of paths at start-up, so a
+// command does not fault in a page per slot before it begins.
+static_assert(kFree == 0, "the states start free without a constructor running");
+std::atomic<int> slot_states[kSlots];
+char slot_paths[kSlots][PATH_MAX];
 static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slot states");
-
-Slot slots[kSlots];
 
 // Not SIGPIPE: capsim ignores it and handles EPIPE where it writes.
 constexpr int kSignals[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGXCPU, SIGXFSZ};
@@ -34,12 +34,12 @@ constexpr int kSignals[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGXCPU, SIGXFSZ};
 // a few instructions, and its worst outcome is a failed unlink.)
 extern "C" void remove_temp_files_and_reraise(int signal_number) {
   const int saved_errno = errno;
-  for (Slot& slot : slots)
-    if (slot.state.load(std::memory_order_acquire) == kArmed) ::unlink(slot.path);
+  for (int i = 0; i < kSlots; ++i)
+    if (slot_states[i].load(std::memory_order_acquire) == kArmed) ::unlink(slot_paths[i]);
   // Directories go once the files in them are gone; rmdir fails harmlessly on
   // the paths the first pass removed.
-  for (Slot& slot : slots)
-    if (slot.state.load(std::memory_order_acquire) == kArmed) ::rmdir(slot.path);
+  for (int i = 0; i < kSlots; ++i)
+    if (slot_states[i].load(std::memory_order_acquire) == kArmed) ::rmdir(slot_paths[i]);
   errno = saved_errno;
   // SA_RESETHAND restored the default action on entry; the signal, blocked
   // while this handler runs, is delivered again when it returns.
@@ -52,9 +52,9 @@ int register_temp_file(const std::string& path) {
   if (path.size() >= PATH_MAX) return -1;
   for (int i = 0; i < kSlots; ++i) {
     int expected = kFree;
-    if (slots[i].state.compare_exchange_strong(expected, kFilling, std::memory_order_acquire)) {
-      std::memcpy(slots[i].path, path.c_str(), path.size() + 1);
-      slots[i].state.store(kArmed, std::memory_order_release);
+    if (slot_states[i].compare_exchange_strong(expected, kFilling, std::memory_order_acquire)) {
+      std::memcpy(slot_paths[i], path.c_str(), path.size() + 1);
+      slot_states[i].store(kArmed, std::memory_order_release);
       return i;
     }
   }
@@ -62,7 +62,7 @@ int register_temp_file(const std::string& path) {
 }
 
 void unregister_temp_file(int slot) {
-  if (slot >= 0 && slot < kSlots) slots[slot].state.store(kFree, std::memory_order_release);
+  if (slot >= 0 && slot < kSlots) slot_states[slot].store(kFree, std::memory_order_release);
 }
 
 void remove_temp_files_on_signals() {
