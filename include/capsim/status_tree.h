@@ -45,22 +45,41 @@ class StatusTree {
 
   // Toggles primitive p's leaf and propagates. Returns true if the root's status
   // changed. Counts one visit for the leaf and one for each operator node reached.
+  //
+  // The first toggle after a reset, of a leaf under unions only, turns every
+  // node above it inside and reaches the root: its count and result are known
+  // without the climb, and the nodes' statuses are written only if the tree is
+  // read or toggled again before the next reset. (A ray's first crossing is
+  // often its last: in a union of solids the first one entered is the hit.)
   bool toggle(std::uint32_t p, OpCounts& ops);
 
   bool root_inside() const { return root_inside_; }
   bool leaf_inside(std::uint32_t p) const { return leaf_epoch_[p] == epoch_ && leaf_inside_[p]; }
   bool present(std::uint32_t p) const { return leaves_[p].present; }
+  const StatusLeaf& leaf(std::uint32_t p) const { return leaves_[p]; }
   bool empty() const { return !has_root_; }
 
   // Back to the all-outside state of a fresh tree. O(1): every node and leaf
   // carries the epoch its statuses belong to, and a stale one reads as outside.
   void reset();
 
-  const std::vector<StatusNode>& nodes() const { return nodes_; }
+  const std::vector<StatusNode>& nodes() const {
+    write_first_climb();
+    return nodes_;
+  }
 
  private:
-  std::vector<StatusNode> nodes_;
+  // The statuses a first toggle's climb leaves, written now (see toggle).
+  void write_first_climb() const;
+
+  // Written lazily by write_first_climb, which a const reader may call.
+  mutable std::vector<StatusNode> nodes_;
+  mutable std::int32_t unwritten_climb_ = -1;  // the leaf whose first climb is not written yet
   std::vector<StatusLeaf> leaves_;
+  // Per leaf: the number of operator nodes above it when every one is a
+  // union, else -1.
+  std::vector<std::int32_t> union_depth_;
+  bool fresh_ = true;  // no toggle since the last reset
   std::vector<char> leaf_inside_;
   std::vector<std::uint32_t> leaf_epoch_;
   std::uint32_t epoch_ = 1;

@@ -85,7 +85,8 @@ BinaryPtr simplify(const CsgNode& node) {
 }  // namespace
 
 StatusTree::StatusTree(const CsgNode& root, std::size_t primitive_count)
-    : leaves_(primitive_count), leaf_inside_(primitive_count, 0), leaf_epoch_(primitive_count, 0) {
+    : leaves_(primitive_count), union_depth_(primitive_count, -1), leaf_inside_(primitive_count, 0),
+      leaf_epoch_(primitive_count, 0) {
   const BinaryPtr tree = simplify(root);
   if (!tree) return;
   has_root_ = true;
@@ -96,14 +97,20 @@ StatusTree::StatusTree(const CsgNode& root, std::size_t primitive_count)
     std::uint8_t side;  // the parent's status this node sets
   };
   std::vector<Item> stack = {{tree.get(), -1, StatusNode::kLeft}};
+  // Per node: the number of operator nodes from it to the root when all are
+  // unions, else -1.
+  std::vector<std::int32_t> node_union_depth;
   while (!stack.empty()) {
     const Item it = stack.back();
     stack.pop_back();
     if (it.node->is_leaf) {
       leaves_[it.node->primitive] = {it.parent, it.side, true};
+      union_depth_[it.node->primitive] = it.parent < 0 ? 0 : node_union_depth[it.parent];
       continue;
     }
     const auto index = static_cast<std::int32_t>(nodes_.size());
+    const std::int32_t above = it.parent < 0 ? 0 : node_union_depth[it.parent];
+    node_union_depth.push_back(it.node->op == CsgOp::Union && above >= 0 ? above + 1 : -1);
     nodes_.push_back({it.parent, it.side, kTruth[static_cast<int>(it.node->op)], 0, 0});
     stack.push_back({it.node->right.get(), index, StatusNode::kRight});
     stack.push_back({it.node->left.get(), index, StatusNode::kLeft});
@@ -111,6 +118,20 @@ StatusTree::StatusTree(const CsgNode& root, std::size_t primitive_count)
 }
 
 bool StatusTree::toggle(std::uint32_t p, OpCounts& ops) {
+  write_first_climb();
+  if (fresh_) {
+    fresh_ = false;
+    if (const std::int32_t depth = union_depth_[p]; depth >= 0) {
+      // Every status is false: the leaf turns inside, and so does each union
+      // above it, up to the root.
+      leaf_epoch_[p] = epoch_;
+      leaf_inside_[p] = 1;
+      unwritten_climb_ = static_cast<std::int32_t>(p);
+      ops.tree_visits += 1 + static_cast<std::uint64_t>(depth);
+      root_inside_ = true;
+      return true;
+    }
+  }
   std::uint64_t visits = 1;  // the leaf
   if (leaf_epoch_[p] != epoch_) {
     leaf_epoch_[p] = epoch_;
@@ -141,7 +162,25 @@ bool StatusTree::toggle(std::uint32_t p, OpCounts& ops) {
   return true;
 }
 
+void StatusTree::write_first_climb() const {
+  if (unwritten_climb_ < 0) return;
+  const StatusLeaf& leaf = leaves_[static_cast<std::size_t>(unwritten_climb_)];
+  unwritten_climb_ = -1;
+  unsigned side = leaf.parent_side;
+  for (std::int32_t at = leaf.parent; at >= 0;) {
+    // As toggle's climb leaves a union reached with both operands outside:
+    // the side it came from inside, and itself.
+    StatusNode& node = nodes_[at];
+    node.epoch = epoch_;
+    node.status = static_cast<std::uint8_t>(side | StatusNode::kSelf);
+    side = node.parent_side;
+    at = node.parent;
+  }
+}
+
 void StatusTree::reset() {
+  unwritten_climb_ = -1;
+  fresh_ = true;
   if (++epoch_ == 0) {
     // After 2^32 resets the epochs wrap: clear them all once.
     for (StatusNode& n : nodes_) n.epoch = 0;
