@@ -115,8 +115,12 @@ glm::dmat3 read_resize_2d(const Call& call, const FileAccess& files) {
   shape.name = "union";
   shape.args.clear();
   shape.modifiers.clear();
+  return resize_matrix_2d(spec, evaluate_region(shape, {files.import_dir, files.max_bytes}).outlines);
+}
+
+glm::dmat3 resize_matrix_2d(const ResizeSpec& spec, const std::vector<Outline2d>& outlines) {
   Aabb box;
-  for (const Outline2d& o : evaluate_region(shape, {files.import_dir, files.max_bytes}).outlines)
+  for (const Outline2d& o : outlines)
     for (const glm::dvec2& p : o.vertices) box.extend(glm::dvec3(p, 0));
   const glm::dvec3 s = resize_factors(spec, box_size(box), 2);
   glm::dmat3 m(1.0);
