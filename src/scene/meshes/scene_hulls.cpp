@@ -83,18 +83,8 @@ void add_evaluated(const MeshedSolids& solids, const glm::dmat4& m, bool split, 
                    std::string_view what, Parts& out) {
   const std::string subject = split ? fmt::format("minkowski() of this non-convex {}", what)
                                     : fmt::format("hull() of this {}", what);
-  const std::string_view action = split ? "splits into convex pieces" : "evaluates with CGAL";
-  std::size_t triangles = 0;
-  for (const TriangleMesh& mesh : solids.meshes) triangles += mesh.triangles.size();
-  if (triangles > kMaxDecomposedTriangles)
-    throw SceneError(call.loc, fmt::format("{} is not supported: it has {} triangles, more than the {} capsim {}",
-                                           subject, triangles, kMaxDecomposedTriangles, action));
-  ConvexPieces pieces = solid_pieces(solids, split);
-  if (!pieces.corners)
-    throw SceneError(call.loc, fmt::format("{} is not supported: {}; CGAL {} only a 2-manifold that does not cross "
-                                           "itself",
-                                           subject, pieces.reason, split ? "splits" : "evaluates"));
-  for (const auto& piece : *pieces.corners) add_part(piece, m, out);
+  const EvaluationWords words{subject, "it", split ? "splits into convex pieces" : "evaluates with CGAL"};
+  for (const auto& piece : evaluated_corners(solids, split, call, words)) add_part(piece, m, out);
 }
 
 // The solid a mesh bounds, less those of `holes` (inside it), placed by m:
