@@ -111,15 +111,9 @@ void add_solid(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>&
 // part of its own; anything else is left to CGAL.
 void add_meshed(const Call& call, const FileAccess& files, const glm::dmat4& m, bool split, Parts& out) {
   const MeshedSolids solids = read_meshed_solids(std::span(&call, 1), files, {"hull() or minkowski()", "meshes"});
-  if (only_unions(solids.root)) {
-    if (!split) {
-      for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
-      return;
-    }
-    if (std::all_of(solids.meshes.begin(), solids.meshes.end(), is_convex)) {
-      for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
-      return;
-    }
+  if (only_unions(solids.root) && (!split || std::all_of(solids.meshes.begin(), solids.meshes.end(), is_convex))) {
+    for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
+    return;
   }
   add_evaluated(solids, m, split, call, fmt::format("{}()", call.name), out);
 }
