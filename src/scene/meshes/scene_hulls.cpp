@@ -123,7 +123,6 @@ void add_mesh(const Primitive& p, const glm::dmat4& m, bool split, const Call& c
 }
 
 std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAccess& files);
-void read_hull_arguments(const Call& call);
 
 // Collects a subtree's parts; `split`: a non-convex mesh gives its convex
 // pieces (for minkowski), else all its points as one part (for hull).
@@ -252,12 +251,6 @@ std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAc
     sums = std::move(next);
   }
   return sums;
-}
-
-// hull() and minkowski() take only OpenSCAD's preview hint.
-void read_hull_arguments(const Call& call) {
-  Args args(call, {}, {"convexity"});
-  args.number("convexity", 1);
 }
 
 Primitive mesh_leaf(TriangleMesh mesh, const Call& call) {

@@ -257,8 +257,7 @@ class Evaluator {
       return s;
     }
     if (name == "hull" || name == "minkowski") {
-      Args args(call, {}, {"convexity"});
-      args.number("convexity", 1);
+      read_hull_arguments(call);
       const std::vector<Polygon2d> kids = children(call);
       if (kids.empty()) return std::nullopt;
       return name == "hull" ? hull_2d(kids) : minkowski_sum(kids);
