@@ -39,7 +39,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection, hull, minkowski and import (DXF, SVG), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, resize, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF, AMF, 3MF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection, hull, minkowski and import (DXF, SVG), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, resize, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
