@@ -153,4 +153,20 @@ ConvexPieces solid_pieces(const scene_file::MeshedSolids& solids, bool split) {
   return pieces;
 }
 
+std::vector<std::vector<glm::dvec3>> evaluated_corners(const scene_file::MeshedSolids& solids, bool split,
+                                                       const scene_file::Call& call, const EvaluationWords& words) {
+  std::size_t triangles = 0;
+  for (const TriangleMesh& mesh : solids.meshes) triangles += mesh.triangles.size();
+  if (triangles > kMaxDecomposedTriangles)
+    throw SceneError(call.loc, fmt::format("{} is not supported: {} has {} triangles, more than the {} capsim {}",
+                                           words.subject, words.holder, triangles, kMaxDecomposedTriangles,
+                                           words.action));
+  ConvexPieces pieces = solid_pieces(solids, split);
+  if (!pieces.corners)
+    throw SceneError(call.loc, fmt::format("{} is not supported: {}; CGAL {} only a 2-manifold that does not cross "
+                                           "itself",
+                                           words.subject, pieces.reason, split ? "splits" : "evaluates"));
+  return std::move(*pieces.corners);
+}
+
 }  // namespace capsim

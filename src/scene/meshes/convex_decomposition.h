@@ -14,6 +14,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace capsim {
@@ -37,5 +38,22 @@ struct ConvexPieces {
 };
 ConvexPieces solid_pieces(const scene_file::MeshedSolids& solids, bool split = true);
 inline constexpr std::size_t kMaxDecomposedTriangles = 5000;
+
+// How the refusals of evaluated_corners name what they refuse:
+// "<subject> is not supported: <holder> has N triangles, more than the M
+// capsim <action>", and "<subject> is not supported: <why>; CGAL splits (or
+// evaluates) only a 2-manifold that does not cross itself".
+struct EvaluationWords {
+  std::string_view subject;  // "hull() of this mesh"
+  std::string_view holder;   // what has the triangles: "it"
+  std::string_view action;   // "evaluates with CGAL"
+};
+
+// solid_pieces(solids, split)'s corners, refused (a SceneError at `call`)
+// where the meshes have more than kMaxDecomposedTriangles triangles (before
+// CGAL is run) and where CGAL gives no pieces. Precondition: the meshes are
+// closed.
+std::vector<std::vector<glm::dvec3>> evaluated_corners(const scene_file::MeshedSolids& solids, bool split,
+                                                       const scene_file::Call& call, const EvaluationWords& words);
 
 }  // namespace capsim

@@ -83,18 +83,8 @@ void add_evaluated(const MeshedSolids& solids, const glm::dmat4& m, bool split, 
                    std::string_view what, Parts& out) {
   const std::string subject = split ? fmt::format("minkowski() of this non-convex {}", what)
                                     : fmt::format("hull() of this {}", what);
-  const std::string_view action = split ? "splits into convex pieces" : "evaluates with CGAL";
-  std::size_t triangles = 0;
-  for (const TriangleMesh& mesh : solids.meshes) triangles += mesh.triangles.size();
-  if (triangles > kMaxDecomposedTriangles)
-    throw SceneError(call.loc, fmt::format("{} is not supported: it has {} triangles, more than the {} capsim {}",
-                                           subject, triangles, kMaxDecomposedTriangles, action));
-  ConvexPieces pieces = solid_pieces(solids, split);
-  if (!pieces.corners)
-    throw SceneError(call.loc, fmt::format("{} is not supported: {}; CGAL {} only a 2-manifold that does not cross "
-                                           "itself",
-                                           subject, pieces.reason, split ? "splits" : "evaluates"));
-  for (const auto& piece : *pieces.corners) add_part(piece, m, out);
+  const EvaluationWords words{subject, "it", split ? "splits into convex pieces" : "evaluates with CGAL"};
+  for (const auto& piece : evaluated_corners(solids, split, call, words)) add_part(piece, m, out);
 }
 
 // The solid a mesh bounds, less those of `holes` (inside it), placed by m:
@@ -121,15 +111,9 @@ void add_solid(const TriangleMesh& mesh, const std::vector<const TriangleMesh*>&
 // part of its own; anything else is left to CGAL.
 void add_meshed(const Call& call, const FileAccess& files, const glm::dmat4& m, bool split, Parts& out) {
   const MeshedSolids solids = read_meshed_solids(std::span(&call, 1), files, {"hull() or minkowski()", "meshes"});
-  if (only_unions(solids.root)) {
-    if (!split) {
-      for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
-      return;
-    }
-    if (std::all_of(solids.meshes.begin(), solids.meshes.end(), is_convex)) {
-      for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
-      return;
-    }
+  if (only_unions(solids.root) && (!split || std::all_of(solids.meshes.begin(), solids.meshes.end(), is_convex))) {
+    for (const TriangleMesh& mesh : solids.meshes) add_part(mesh.vertices, m, out);
+    return;
   }
   add_evaluated(solids, m, split, call, fmt::format("{}()", call.name), out);
 }
@@ -139,7 +123,6 @@ void add_mesh(const Primitive& p, const glm::dmat4& m, bool split, const Call& c
 }
 
 std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAccess& files);
-void read_hull_arguments(const Call& call);
 
 // Collects a subtree's parts; `split`: a non-convex mesh gives its convex
 // pieces (for minkowski), else all its points as one part (for hull).
@@ -268,12 +251,6 @@ std::vector<std::vector<glm::dvec3>> summed_parts(const Call& call, const FileAc
     sums = std::move(next);
   }
   return sums;
-}
-
-// hull() and minkowski() take only OpenSCAD's preview hint.
-void read_hull_arguments(const Call& call) {
-  Args args(call, {}, {"convexity"});
-  args.number("convexity", 1);
 }
 
 Primitive mesh_leaf(TriangleMesh mesh, const Call& call) {

@@ -85,20 +85,10 @@ glm::dmat4 read_resize(const Call& call, const FileAccess& files) {
   const MeshedSolids solids = read_meshed_solids(call.children, files, {"resize()", "meshes"});
   std::optional<Aabb> box = known_bounds(solids);
   if (!box) {
-    std::size_t triangles = 0;
-    for (const TriangleMesh& mesh : solids.meshes) triangles += mesh.triangles.size();
-    if (triangles > kMaxDecomposedTriangles)
-      throw SceneError(call.loc, fmt::format("resize() of these children is not supported: their difference or "
-                                             "intersection has {} triangles, more than the {} capsim evaluates "
-                                             "with CGAL for its bounding box",
-                                             triangles, kMaxDecomposedTriangles));
-    const ConvexPieces corners = solid_pieces(solids, false);
-    if (!corners.corners)
-      throw SceneError(call.loc, fmt::format("resize() of these children is not supported: {}; CGAL evaluates "
-                                             "only a 2-manifold that does not cross itself",
-                                             corners.reason));
+    const EvaluationWords words{"resize() of these children", "their difference or intersection",
+                                "evaluates with CGAL for its bounding box"};
     box.emplace();
-    for (const auto& piece : *corners.corners)
+    for (const auto& piece : evaluated_corners(solids, false, call, words))
       for (const glm::dvec3& p : piece) box->extend(p);
   }
   const glm::dvec3 s = resize_factors(spec, box_size(*box), 3);
@@ -115,8 +105,12 @@ glm::dmat3 read_resize_2d(const Call& call, const FileAccess& files) {
   shape.name = "union";
   shape.args.clear();
   shape.modifiers.clear();
+  return resize_matrix_2d(spec, evaluate_region(shape, {files.import_dir, files.max_bytes}).outlines);
+}
+
+glm::dmat3 resize_matrix_2d(const ResizeSpec& spec, const std::vector<Outline2d>& outlines) {
   Aabb box;
-  for (const Outline2d& o : evaluate_region(shape, {files.import_dir, files.max_bytes}).outlines)
+  for (const Outline2d& o : outlines)
     for (const glm::dvec2& p : o.vertices) box.extend(glm::dvec3(p, 0));
   const glm::dvec3 s = resize_factors(spec, box_size(box), 2);
   glm::dmat3 m(1.0);

@@ -7,8 +7,11 @@
 
 #include "scene/meshes/scene_hulls.h"
 #include "scene/reading/scene_syntax.h"
+#include "scene/regions/clipper_utils.h"
 
 #include <glm/glm.hpp>
+
+#include <vector>
 
 namespace capsim::scene_file {
 
@@ -39,5 +42,10 @@ glm::dmat4 read_resize(const Call& call, const FileAccess& files);
 // resize() of 2-D shapes: the box of OpenSCAD's region of the children
 // (scene/regions/region_2d.h), x and y only.
 glm::dmat3 read_resize_2d(const Call& call, const FileAccess& files);
+
+// The 2-D scale about the origin, as a homogeneous matrix, that brings the
+// box of `outlines` to `spec`'s sizes, x and y only (OpenSCAD's
+// Polygon2d::resize); no outlines give the factors of an empty box.
+glm::dmat3 resize_matrix_2d(const ResizeSpec& spec, const std::vector<Outline2d>& outlines);
 
 }  // namespace capsim::scene_file

@@ -39,7 +39,7 @@ using scene_file::Call;
 using scene_file::Loc;
 
 constexpr std::string_view kSupported =
-    "sphere, cube, cylinder, polyhedron, import (STL, OFF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection, hull, minkowski and import (DXF, SVG), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, resize, union, difference, "
+    "sphere, cube, cylinder, polyhedron, import (STL, OFF, AMF, 3MF), surface, hull, minkowski, linear_extrude and rotate_extrude of square, circle, polygon, text, offset, projection, hull, minkowski and import (DXF, SVG), 2-D shapes alone (drawn 1 unit thick), multmatrix, translate, rotate, scale, mirror, resize, union, difference, "
     "intersection, group, render, color, material, camera, light, background";
 
 bool is_primitive(std::string_view n) {
@@ -55,6 +55,16 @@ bool is_shape_2d(std::string_view n) { return n == "square" || n == "circle" || 
 bool is_object(std::string_view n) {
   return is_primitive(n) || n == "linear_extrude" || n == "rotate_extrude" || is_transform(n) || n == "union" || n == "difference" ||
          n == "intersection" || n == "group" || n == "render" || n == "color" || n == "material";
+}
+
+// A 2-D affine transform (homogeneous, its last row 0 0 1) as the 3-D one
+// it is on the plane z = 0: x and y map as in the plane, z is kept.
+glm::dmat4 widened(const glm::dmat3& plane) {
+  glm::dmat4 m(1.0);
+  m[0] = glm::dvec4(glm::dvec2(plane[0]), 0, 0);
+  m[1] = glm::dvec4(glm::dvec2(plane[1]), 0, 0);
+  m[3] = glm::dvec4(glm::dvec2(plane[2]), 0, 1);
+  return m;
 }
 
 // OpenSCAD modules outside the subset, with why they are refused: what the
@@ -340,11 +350,7 @@ class Interpreter {
   [[gnu::noinline]] glm::dmat4 resize_matrix(const Call& call) const {
     const scene_file::FileAccess files{import_dir_, max_file_bytes_};
     if (!starts_2d(call)) return scene_file::read_resize(call, files);
-    const glm::dmat3 plane = scene_file::read_resize_2d(call, files);
-    glm::dmat4 m(1.0);
-    m[0][0] = plane[0][0];
-    m[1][1] = plane[1][1];
-    return m;
+    return widened(scene_file::read_resize_2d(call, files));
   }
 
   std::vector<CsgNode> children(const Call& call, ContextId ctx) {

@@ -468,6 +468,11 @@ void read_pass_through(const Call& call) {
   }
 }
 
+void read_hull_arguments(const Call& call) {
+  Args args(call, {}, {"convexity"});
+  args.number("convexity", 1);
+}
+
 Camera read_camera(const Call& call) {
   Args args(call, {"eye", "center", "up", "fov", "size"});
   Camera cam;

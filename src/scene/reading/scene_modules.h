@@ -33,6 +33,10 @@ Material read_material(const Call& call, const Material& enclosing);
 // render(...) and the operators: only checks their arguments.
 void read_pass_through(const Call& call);
 
+// hull() and minkowski(), of solids or of 2-D shapes: only checks their
+// arguments (they take only OpenSCAD's preview hint, convexity, by name).
+void read_hull_arguments(const Call& call);
+
 Camera read_camera(const Call& call);
 Light read_light(const Call& call);
 glm::dvec3 read_background(const Call& call);  // linear RGB

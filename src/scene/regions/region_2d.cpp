@@ -253,19 +253,11 @@ class Evaluator {
       const ResizeSpec spec = read_resize_spec(call);
       std::optional<Polygon2d> s = union_of_children(call);
       if (!s) return s;
-      Aabb box;
-      for (const Outline2d& o : s->outlines)
-        for (const glm::dvec2& p : o.vertices) box.extend(glm::dvec3(p, 0));
-      const glm::dvec3 f = resize_factors(spec, box.empty() ? glm::dvec3(0) : box.hi - box.lo, 2);
-      glm::dmat3 m(1.0);
-      m[0][0] = f.x;
-      m[1][1] = f.y;
-      transform(*s, m);
+      transform(*s, resize_matrix_2d(spec, s->outlines));
       return s;
     }
     if (name == "hull" || name == "minkowski") {
-      Args args(call, {}, {"convexity"});
-      args.number("convexity", 1);
+      read_hull_arguments(call);
       const std::vector<Polygon2d> kids = children(call);
       if (kids.empty()) return std::nullopt;
       return name == "hull" ? hull_2d(kids) : minkowski_sum(kids);
