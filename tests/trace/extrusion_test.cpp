@@ -111,7 +111,7 @@ TEST(ParserExtrusion, Refusals) {
   EXPECT_EQ(refusal("linear_extrude(1) sphere(1);"),
             "t.csg:1:19: sphere() is not a 2-D shape: linear_extrude() extrudes square, circle, polygon and text");
   EXPECT_EQ(refusal("linear_extrude(1) import(\"a.stl\");"),
-            "t.csg:1:19: import() of a mesh (STL, OFF) is not a 2-D shape: linear_extrude() extrudes square, "
+            "t.csg:1:19: import() of a mesh (STL, OFF, AMF, 3MF) is not a 2-D shape: linear_extrude() extrudes square, "
             "circle, polygon, text, offset, projection and 2-D imports (DXF, SVG)");
   EXPECT_EQ(refusal("linear_extrude(1) !square(1);"),
             "t.csg:1:19: the '!' (root) modifier is not supported inside linear_extrude()");

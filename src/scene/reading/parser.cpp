@@ -599,7 +599,7 @@ class Interpreter {
                           name == "render";
     if (!is_group && !is_transform(name) && name != "color" && name != "material") {
       if (name == "import") {
-        throw SceneError(call.loc, fmt::format("import() of a mesh (STL, OFF) is not a 2-D shape: {}() extrudes "
+        throw SceneError(call.loc, fmt::format("import() of a mesh (STL, OFF, AMF, 3MF) is not a 2-D shape: {}() extrudes "
                                                "square, circle, polygon, text, offset, projection and 2-D imports "
                                                "(DXF, SVG)",
                                                revolve_ ? "rotate_extrude" : "linear_extrude"));
