@@ -158,6 +158,13 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format, 
     encode_srgb8_row({&px, 1}, out);
 }
 
+// Whether a pixel's operations matter only in its cell's sum, which the
+// tracer may then add them to directly: no float screen keeps the pixel's own
+// cycles, no write cycles are kept, and no stealing chunk sums them apart.
+bool only_cell_sums(ScreenFormat format, bool keep_write_cycles, int chunk_pixels) {
+  return format != ScreenFormat::Float && !keep_write_cycles && chunk_pixels <= 0;
+}
+
 // Where trace_cells' samples and operations come from: the tracer, tracing
 // them now, or a screen it traced ahead (ScreenTrace), which holds the same
 // samples and counts. Either gives the same cells to the bit.
@@ -208,6 +215,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
   const int cell_count = layout.grid().cell_count();
   const int width = layout.width(), height = layout.height();
   const bool floats = format == ScreenFormat::Float;
+  const bool summed_only = only_cell_sums(format, keep_write_cycles, chunk_pixels);
   std::vector<TracedCell> cells = empty_cells(layout, format, true, keep_write_cycles);
   const OwnerTable owners(layout);
   auto owner = [&](int x, int y) {
@@ -261,7 +269,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
                                    corners.at(x + 1, y + 1)};
         TracedCell& out = cells[own.cell];
         ++sum.items[own.cell];
-        if (!floats && !keep_write_cycles && chunk_pixels <= 0) {
+        if (summed_only) {
           // resolve adds its operations to the cell's sum directly.
           store(out, own.video_index, source.resolve(x, y, c, aa, s, sum.ops[own.cell]).value, format,
                 source.srgb8(x, y));
@@ -320,6 +328,7 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
                                           ScreenFormat format, bool keep_write_cycles, int chunk_pixels) {
   const int cell_count = layout.grid().cell_count();
   const bool floats = format == ScreenFormat::Float;
+  const bool summed_only = only_cell_sums(format, keep_write_cycles, chunk_pixels);
   std::vector<TracedCell> cells = empty_cells(layout, format, false, keep_write_cycles);
   const OwnerTable owners(layout);
   // Pixels are traced in screen order, row by row as `capsim render` traces
@@ -335,7 +344,7 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
         const PixelOwner owner = owners.owner(x, y);
         TracedCell& out = cells[owner.cell];
         ++sum.items[owner.cell];
-        if (!floats && !keep_write_cycles && chunk_pixels <= 0) {
+        if (summed_only) {
           // trace_pixel adds its operations to the cell's sum directly.
           store(out, owner.video_index, source.pixel(x, y, s, sum.ops[owner.cell]), format, source.srgb8(x, y));
           continue;
