@@ -434,14 +434,4 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
   return t;
 }
 
-std::uint64_t screen_trace_memory(int width, int height, const AntialiasOptions& aa) {
-  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
-  std::uint64_t bytes = pixels * (sizeof(PixelSample) + 3 + sizeof(OpCounts));
-  if (aa.depth > 0)
-    bytes += pixels * sizeof(std::uint32_t) +
-             static_cast<std::uint64_t>(width + 1) * static_cast<std::uint64_t>(height + 1) *
-                 (sizeof(ScreenSample) + sizeof(OpCounts));
-  return bytes;
-}
-
 }  // namespace capsim::sim

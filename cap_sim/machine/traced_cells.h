@@ -76,7 +76,8 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
 // operations), in screen order. Runs that differ only in how the cells share
 // the screen (cells, mode, balance, profile) trace the same pixels: laying out
 // this trace gives each the cells trace_cells gives, to the bit, without
-// tracing again. Holds screen_trace_memory bytes. The tracer must outlive it.
+// tracing again. It holds a sample, 3 bytes of its 8-bit encoding and an OpCounts
+// per pixel (antialiased, also per corner). The tracer must outlive it.
 struct ScreenTrace {
   const Tracer* tracer = nullptr;
   AntialiasOptions aa;
@@ -92,7 +93,6 @@ struct ScreenTrace {
 // The tracer's screen (its camera's size) traced with `aa`. threads: 0 = all
 // hardware threads; the trace does not depend on it.
 ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int threads);
-std::uint64_t screen_trace_memory(int width, int height, const AntialiasOptions& aa);
 
 // trace_cells of the screen's tracer with the screen's antialiasing, from the
 // trace. Precondition: layout is of the screen's size.

@@ -74,8 +74,8 @@ std::string run_command(const RunSpec& spec);
 // The screen of the latest run traced ahead, for the next runs that trace the
 // same pixels: the same scene (file or lattice), size, grid, primary_only and
 // antialiasing, whatever their cells, mode, balance and costs. The mode
-// benchmarks run twenty such in a row; one kept trace (screen_trace_memory
-// bytes) spares tracing each again.
+// benchmarks run twenty such in a row; one kept trace (ScreenTrace) spares
+// tracing each again.
 class ScreenTraces {
  public:
   ScreenTraces();
