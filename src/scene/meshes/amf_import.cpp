@@ -8,6 +8,8 @@
 
 #include "scene/meshes/amf_import.h"
 
+#include "scene/libxml2_library.h"
+
 #include <fmt/format.h>
 #include <libxml/xmlreader.h>
 
@@ -26,26 +28,36 @@ const std::string kTriangle = kObject + "/mesh/volume/triangle";
 constexpr std::array<const char*, 3> kAxes = {"x", "y", "z"};
 constexpr std::array<const char*, 3> kCorners = {"v1", "v2", "v3"};
 
+// libxml2, opened on the first import; a library that cannot be loaded is
+// refused naming the file.
+const Libxml2& opened_libxml2(const std::string& path) {
+  try {
+    return libxml2();
+  } catch (const std::runtime_error& e) {
+    throw MeshFileError(fmt::format("{}: {}", path, e.what()));
+  }
+}
+
 class AmfReader {
  public:
-  AmfReader(const std::string& path, const std::string& data) : path_(path) {
+  AmfReader(const std::string& path, const std::string& data) : path_(path), xml_(opened_libxml2(path)) {
     // No entity substitution and no network: a file reads nothing but itself.
-    reader_ = xmlReaderForMemory(data.data(), static_cast<int>(data.size()), path.c_str(), nullptr,
+    reader_ = xml_.xmlReaderForMemory(data.data(), static_cast<int>(data.size()), path.c_str(), nullptr,
                                  XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
     if (!reader_) throw MeshFileError(fmt::format("{}: libxml2 cannot start reading it", path));
-    xmlTextReaderSetStructuredErrorHandler(reader_, &AmfReader::on_error, this);
+    xml_.xmlTextReaderSetStructuredErrorHandler(reader_, &AmfReader::on_error, this);
   }
-  ~AmfReader() { xmlFreeTextReader(reader_); }
+  ~AmfReader() { xml_.xmlFreeTextReader(reader_); }
   AmfReader(const AmfReader&) = delete;
   AmfReader& operator=(const AmfReader&) = delete;
 
   std::vector<MeshObject> read() {
     int status;
-    while ((status = xmlTextReaderRead(reader_)) == 1) {
-      switch (xmlTextReaderNodeType(reader_)) {
+    while ((status = xml_.xmlTextReaderRead(reader_)) == 1) {
+      switch (xml_.xmlTextReaderNodeType(reader_)) {
         case XML_READER_TYPE_ELEMENT: {
-          const bool empty = xmlTextReaderIsEmptyElement(reader_) == 1;
-          start(reinterpret_cast<const char*>(xmlTextReaderConstName(reader_)));
+          const bool empty = xml_.xmlTextReaderIsEmptyElement(reader_) == 1;
+          start(reinterpret_cast<const char*>(xml_.xmlTextReaderConstName(reader_)));
           if (empty) end();  // <x/> has no end element of its own
           break;
         }
@@ -53,7 +65,7 @@ class AmfReader {
           end();
           break;
         case XML_READER_TYPE_TEXT:
-          text(reinterpret_cast<const char*>(xmlTextReaderConstValue(reader_)));
+          text(reinterpret_cast<const char*>(xml_.xmlTextReaderConstValue(reader_)));
           break;
         default:
           break;
@@ -84,17 +96,17 @@ class AmfReader {
     throw MeshFileError(fmt::format("{}:{}: {}", path_, line, message));
   }
 
-  long line() const { return xmlGetLineNo(xmlTextReaderCurrentNode(reader_)); }
+  long line() const { return xml_.xmlGetLineNo(xml_.xmlTextReaderCurrentNode(reader_)); }
 
   void start(const char* name) {
     at_ += '/';
     at_ += name;
     if (at_ == kObject) {
-      xmlChar* id = xmlTextReaderGetAttribute(reader_, BAD_CAST "id");
+      xmlChar* id = xml_.xmlTextReaderGetAttribute(reader_, BAD_CAST "id");
       object_ = {fmt::format("{}:{}: {}", path_, line(),
                              id ? fmt::format("object {}", reinterpret_cast<const char*>(id)) : "the object"),
                  {}};
-      xmlFree(id);
+      xml_.free(id);
     } else if (at_ == kCoordinates) {
       part_line_ = line();
       xyz_ = {};
@@ -182,6 +194,7 @@ class AmfReader {
   }
 
   const std::string& path_;
+  const Libxml2& xml_;
   xmlTextReaderPtr reader_ = nullptr;
   std::string at_;  // the open elements from the root, "/amf/object/mesh"
   std::string error_;

@@ -1,5 +1,6 @@
 // 3MF through lib3mf 1.x's C interface (Debian 12 packages 1.8.1, the
-// interface OpenSCAD 2021.01 was built against).
+// interface OpenSCAD 2021.01 was built against), opened on the first import
+// rather than at every start (capsim/shared_library.h).
 //
 // OpenSCAD reads every mesh object resource of the model and ignores the
 // build: an object no build item names is imported too, a build item's
@@ -9,26 +10,68 @@
 
 #include "scene/meshes/threemf_import.h"
 
+#include "capsim/shared_library.h"
+
 #include <Model/COM/NMR_DLLInterfaces.h>
 #include <fmt/format.h>
 
 #include <memory>
+#include <stdexcept>
 
 namespace capsim::scene_file {
 
 namespace {
 
+// The functions of lib3mf's interface that the import calls, found in the
+// library on first use. CAPSIM_LIB3MF_SONAME is the soname of the lib3MF the
+// build found (CMakeLists.txt), so the interface the header declares is the
+// one loaded.
+struct Lib3mf {
+#define CAPSIM_LIB3MF(name) decltype(&NMR::name) name = library().function<decltype(&NMR::name)>(#name)
+  CAPSIM_LIB3MF(lib3mf_createmodel);
+  CAPSIM_LIB3MF(lib3mf_release);
+  CAPSIM_LIB3MF(lib3mf_getlasterror);
+  CAPSIM_LIB3MF(lib3mf_model_queryreader);
+  CAPSIM_LIB3MF(lib3mf_reader_readfrombuffer);
+  CAPSIM_LIB3MF(lib3mf_model_getmeshobjects);
+  CAPSIM_LIB3MF(lib3mf_resourceiterator_movenext);
+  CAPSIM_LIB3MF(lib3mf_resourceiterator_getcurrent);
+  CAPSIM_LIB3MF(lib3mf_resource_getresourceid);
+  CAPSIM_LIB3MF(lib3mf_meshobject_getvertexcount);
+  CAPSIM_LIB3MF(lib3mf_meshobject_gettrianglecount);
+  CAPSIM_LIB3MF(lib3mf_meshobject_getvertices);
+  CAPSIM_LIB3MF(lib3mf_meshobject_gettriangleindices);
+#undef CAPSIM_LIB3MF
+
+  static const SharedLibrary& library() {
+    static const SharedLibrary lib(CAPSIM_LIB3MF_SONAME, "3MF import");
+    return lib;
+  }
+};
+
+// The table, filled on the first import; a library that cannot be loaded is
+// refused at each import that needs it, naming the file.
+const Lib3mf& lib3mf(const std::string& path) {
+  try {
+    static const Lib3mf table;
+    return table;
+  } catch (const std::runtime_error& e) {
+    throw MeshFileError(fmt::format("{}: {}", path, e.what()));
+  }
+}
+
 // lib3mf's handles are reference counted; each one the interface hands out
 // (the model, the reader, the iterator and every resource it yields) is
 // released once.
 struct Release {
-  void operator()(NMR::PLib3MFBase* handle) const { NMR::lib3mf_release(handle); }
+  const Lib3mf* lib;
+  void operator()(NMR::PLib3MFBase* handle) const { lib->lib3mf_release(handle); }
 };
 using Handle = std::unique_ptr<NMR::PLib3MFBase, Release>;
 
 class ThreeMfReader {
  public:
-  explicit ThreeMfReader(const std::string& path) : path_(path) {}
+  ThreeMfReader(const std::string& path, const Lib3mf& lib) : path_(path), lib_(lib) {}
 
   [[noreturn]] void fail(const std::string& message) const {
     throw MeshFileError(fmt::format("{}: {}", path_, message));
@@ -39,7 +82,7 @@ class ThreeMfReader {
     if (result == LIB3MF_OK) return;
     DWORD code = 0;
     LPCSTR why = nullptr;
-    if (handle && NMR::lib3mf_getlasterror(handle, &code, &why) == LIB3MF_OK && why && *why)
+    if (handle && lib_.lib3mf_getlasterror(handle, &code, &why) == LIB3MF_OK && why && *why)
       fail(fmt::format("{}: {} (lib3mf error {:#x})", doing, why, code));
     fail(fmt::format("{} (lib3mf error {:#x})", doing, static_cast<unsigned>(result)));
   }
@@ -47,16 +90,16 @@ class ThreeMfReader {
   // One mesh object's vertices and triangles (no faces when it has none).
   MeshObject object(NMR::PLib3MFModelMeshObject* mesh) const {
     DWORD id = 0, nv = 0, nt = 0;
-    check(NMR::lib3mf_resource_getresourceid(mesh, &id), mesh, "cannot read a mesh object's id");
+    check(lib_.lib3mf_resource_getresourceid(mesh, &id), mesh, "cannot read a mesh object's id");
     MeshObject o{fmt::format("{}: object {}", path_, id), {}};
-    check(NMR::lib3mf_meshobject_getvertexcount(mesh, &nv), mesh, "cannot read a mesh object");
-    check(NMR::lib3mf_meshobject_gettrianglecount(mesh, &nt), mesh, "cannot read a mesh object");
+    check(lib_.lib3mf_meshobject_getvertexcount(mesh, &nv), mesh, "cannot read a mesh object");
+    check(lib_.lib3mf_meshobject_gettrianglecount(mesh, &nt), mesh, "cannot read a mesh object");
     if (nt == 0) return o;
     std::vector<NMR::MODELMESHVERTEX> vertices(nv);
     std::vector<NMR::MODELMESHTRIANGLE> triangles(nt);
     if (nv > 0)
-      check(NMR::lib3mf_meshobject_getvertices(mesh, vertices.data(), nv, nullptr), mesh, "cannot read vertices");
-    check(NMR::lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), nt, nullptr), mesh,
+      check(lib_.lib3mf_meshobject_getvertices(mesh, vertices.data(), nv, nullptr), mesh, "cannot read vertices");
+    check(lib_.lib3mf_meshobject_gettriangleindices(mesh, triangles.data(), nt, nullptr), mesh,
           "cannot read triangles");
     o.mesh.points.reserve(nv);
     for (DWORD i = 0; i < nv; ++i) {
@@ -78,38 +121,42 @@ class ThreeMfReader {
 
  private:
   const std::string& path_;
+  const Lib3mf& lib_;
 };
 
-Handle made(LIB3MFRESULT result, NMR::PLib3MFBase* handle) { return Handle(result == LIB3MF_OK ? handle : nullptr); }
+Handle made(const Lib3mf& lib, LIB3MFRESULT result, NMR::PLib3MFBase* handle) {
+  return Handle(result == LIB3MF_OK ? handle : nullptr, Release{&lib});
+}
 
 }  // namespace
 
 std::vector<MeshObject> read_3mf(const std::string& path, std::string data) {
-  const ThreeMfReader r(path);
+  const Lib3mf& lib = lib3mf(path);
+  const ThreeMfReader r(path, lib);
   NMR::PLib3MFModel* model_handle = nullptr;
-  const LIB3MFRESULT created = NMR::lib3mf_createmodel(&model_handle);
-  const Handle model = made(created, model_handle);
+  const LIB3MFRESULT created = lib.lib3mf_createmodel(&model_handle);
+  const Handle model = made(lib, created, model_handle);
   r.check(created, nullptr, "lib3mf cannot make a model");
 
   NMR::PLib3MFModelReader* reader_handle = nullptr;
-  const LIB3MFRESULT queried = NMR::lib3mf_model_queryreader(model.get(), "3mf", &reader_handle);
-  const Handle reader = made(queried, reader_handle);
+  const LIB3MFRESULT queried = lib.lib3mf_model_queryreader(model.get(), "3mf", &reader_handle);
+  const Handle reader = made(lib, queried, reader_handle);
   r.check(queried, model.get(), "lib3mf has no 3MF reader");
-  r.check(NMR::lib3mf_reader_readfrombuffer(reader.get(), reinterpret_cast<BYTE*>(data.data()), data.size()),
+  r.check(lib.lib3mf_reader_readfrombuffer(reader.get(), reinterpret_cast<BYTE*>(data.data()), data.size()),
           reader.get(), "lib3mf cannot read it as a 3MF package");
 
   NMR::PLib3MFModelResourceIterator* it_handle = nullptr;
-  const LIB3MFRESULT listed = NMR::lib3mf_model_getmeshobjects(model.get(), &it_handle);
-  const Handle objects = made(listed, it_handle);
+  const LIB3MFRESULT listed = lib.lib3mf_model_getmeshobjects(model.get(), &it_handle);
+  const Handle objects = made(lib, listed, it_handle);
   r.check(listed, model.get(), "cannot list the mesh objects");
   std::vector<MeshObject> out;
   for (;;) {
     BOOL more = false;
-    r.check(NMR::lib3mf_resourceiterator_movenext(objects.get(), &more), objects.get(), "cannot list the mesh objects");
+    r.check(lib.lib3mf_resourceiterator_movenext(objects.get(), &more), objects.get(), "cannot list the mesh objects");
     if (!more) break;
     NMR::PLib3MFModelResource* object_handle = nullptr;
-    const LIB3MFRESULT got = NMR::lib3mf_resourceiterator_getcurrent(objects.get(), &object_handle);
-    const Handle object = made(got, object_handle);
+    const LIB3MFRESULT got = lib.lib3mf_resourceiterator_getcurrent(objects.get(), &object_handle);
+    const Handle object = made(lib, got, object_handle);
     r.check(got, objects.get(), "cannot read a mesh object");
     // An object without triangles adds nothing to OpenSCAD's union.
     if (MeshObject o = r.object(object.get()); !o.mesh.faces.empty()) out.push_back(std::move(o));

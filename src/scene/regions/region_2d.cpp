@@ -24,6 +24,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <stdexcept>
 
 namespace capsim::scene_file {
 
@@ -133,7 +134,13 @@ Polygon2d import_2d(const Call& call, const RegionSources& sources) {
       o.dpi = args.number("dpi", 72);
       if (!(o.dpi >= 0.001 && o.dpi <= 1e9)) args.fail_value("dpi", "the dpi must be between 0.001 and 1e9");
       o.center = args.boolean("center", false);
-      return read_svg(text, o);  // its curves are cut into fixed numbers of segments, not by $fn
+      try {
+        return read_svg(text, o);  // its curves are cut into fixed numbers of segments, not by $fn
+      } catch (const SvgError&) {
+        throw;
+      } catch (const std::runtime_error& e) {  // libxml2 cannot be loaded (scene/libxml2_library.h)
+        args.fail_value("file", fmt::format("cannot import '{}': {}: {}", file, path, e.what()));
+      }
     }
     DxfOptions o;
     if (args.has("layer")) {

@@ -7,6 +7,8 @@
 
 #include "scene/regions/svg_import.h"
 
+#include "scene/libxml2_library.h"
+
 #include "scene/reading/scene_expression.h"
 
 #include <fmt/format.h>
@@ -394,15 +396,15 @@ void record_error(void* sink, XmlErrorArg error) {
 }
 
 struct ReaderFree {
-  void operator()(xmlTextReader* r) const { xmlFreeTextReader(r); }
+  void operator()(xmlTextReader* r) const { libxml2().xmlFreeTextReader(r); }
 };
 struct XmlFree {
-  void operator()(xmlChar* s) const { xmlFree(s); }
+  void operator()(xmlChar* s) const { libxml2().free(s); }
 };
 
 class Reader {
  public:
-  Reader(std::string_view text, const SvgOptions& o) : text_(text), o_(o) {}
+  Reader(std::string_view text, const SvgOptions& o) : text_(text), o_(o), xml_(libxml2()) {}
 
   Polygon2d read() {
     parse_xml();
@@ -416,33 +418,33 @@ class Reader {
     // No network, no external DTD, no entity substitution: a drawing reads
     // nothing but itself.
     std::unique_ptr<xmlTextReader, ReaderFree> reader(
-        xmlReaderForMemory(text_.data(), static_cast<int>(text_.size()), nullptr, nullptr, XML_PARSE_NONET | XML_PARSE_BIG_LINES));
+        xml_.xmlReaderForMemory(text_.data(), static_cast<int>(text_.size()), nullptr, nullptr, XML_PARSE_NONET | XML_PARSE_BIG_LINES));
     if (!reader) fail(1, "the XML reader cannot start");
     XmlErrors errors;
-    xmlTextReaderSetStructuredErrorHandler(reader.get(), record_error, &errors);
+    xml_.xmlTextReaderSetStructuredErrorHandler(reader.get(), record_error, &errors);
     int ret = 0;
-    while ((ret = xmlTextReaderRead(reader.get())) == 1) node(reader.get());
+    while ((ret = xml_.xmlTextReaderRead(reader.get())) == 1) node(reader.get());
     if (ret != 0 || !errors.message.empty())
-      fail(errors.line > 0 ? errors.line : xmlTextReaderGetParserLineNumber(reader.get()),
+      fail(errors.line > 0 ? errors.line : xml_.xmlTextReaderGetParserLineNumber(reader.get()),
            fmt::format("the file is not well-formed XML: {}", errors.message.empty() ? "unreadable" : errors.message));
   }
 
   // libsvg.cc's processNode.
   void node(xmlTextReader* r) {
-    const int type = xmlTextReaderNodeType(r);
+    const int type = xml_.xmlTextReaderNodeType(r);
     if (type != XML_READER_TYPE_ELEMENT && type != XML_READER_TYPE_END_ELEMENT &&
         type != XML_READER_TYPE_ENTITY_REFERENCE)
       return;
-    const xmlChar* raw = xmlTextReaderConstName(r);
+    const xmlChar* raw = xml_.xmlTextReaderConstName(r);
     const std::string_view name = raw ? reinterpret_cast<const char*>(raw) : "--";
-    const xmlNode* current = xmlTextReaderCurrentNode(r);
-    line_ = current ? static_cast<int>(xmlGetLineNo(current)) : xmlTextReaderGetParserLineNumber(r);
+    const xmlNode* current = xml_.xmlTextReaderCurrentNode(r);
+    line_ = current ? static_cast<int>(xml_.xmlGetLineNo(current)) : xml_.xmlTextReaderGetParserLineNumber(r);
     if (type == XML_READER_TYPE_ENTITY_REFERENCE)
       fail(line_, fmt::format("the entity reference '&{};' (in the element of this line) is not read: capsim "
                               "expands no entities in content (OpenSCAD 2021.01 does)",
                               name));
     if (type == XML_READER_TYPE_ELEMENT) {
-      const bool empty = xmlTextReaderIsEmptyElement(r) == 1;
+      const bool empty = xml_.xmlTextReaderIsEmptyElement(r) == 1;
       start(name, r);
       if (!empty) return;
     }
@@ -453,12 +455,12 @@ class Reader {
 
   Attrs attributes(xmlTextReader* r) {
     Attrs attrs;
-    while (xmlTextReaderMoveToNextAttribute(r) == 1) {
-      const xmlChar* name = xmlTextReaderConstName(r);
-      std::unique_ptr<xmlChar, XmlFree> value(xmlTextReaderValue(r));
+    while (xml_.xmlTextReaderMoveToNextAttribute(r) == 1) {
+      const xmlChar* name = xml_.xmlTextReaderConstName(r);
+      std::unique_ptr<xmlChar, XmlFree> value(xml_.xmlTextReaderValue(r));
       attrs[name ? reinterpret_cast<const char*>(name) : ""] = value ? reinterpret_cast<const char*>(value.get()) : "";
     }
-    xmlTextReaderMoveToElement(r);
+    xml_.xmlTextReaderMoveToElement(r);
     return attrs;
   }
 
@@ -974,6 +976,7 @@ class Reader {
 
   std::string_view text_;
   const SvgOptions& o_;
+  const Libxml2& xml_;
   int line_ = 1, first_line_ = 0;
   bool in_defs_ = false;
   std::vector<int> stack_;  // the open svg, g, text and tspan elements

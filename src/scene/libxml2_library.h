@@ -1,0 +1,49 @@
+#pragma once
+// The functions of libxml2's text reader that the AMF and SVG imports call,
+// from the library opened on the first import rather than at every start
+// (capsim/shared_library.h): libxml2 brings ICU, which every run would
+// otherwise load and relocate.
+
+#include <libxml/xmlreader.h>
+
+#include <string>
+
+namespace capsim::scene_file {
+
+struct Libxml2 {
+  // Fills the table, opening the library; throws std::runtime_error when it
+  // cannot, naming the library and why.
+  Libxml2();
+
+#define CAPSIM_LIBXML2(name) decltype(&::name) name
+  CAPSIM_LIBXML2(xmlReaderForMemory);
+  CAPSIM_LIBXML2(xmlFreeTextReader);
+  CAPSIM_LIBXML2(xmlTextReaderSetStructuredErrorHandler);
+  CAPSIM_LIBXML2(xmlTextReaderRead);
+  CAPSIM_LIBXML2(xmlTextReaderNodeType);
+  CAPSIM_LIBXML2(xmlTextReaderIsEmptyElement);
+  CAPSIM_LIBXML2(xmlTextReaderConstName);
+  CAPSIM_LIBXML2(xmlTextReaderConstValue);
+  CAPSIM_LIBXML2(xmlTextReaderValue);
+  CAPSIM_LIBXML2(xmlTextReaderGetAttribute);
+  CAPSIM_LIBXML2(xmlTextReaderMoveToNextAttribute);
+  CAPSIM_LIBXML2(xmlTextReaderMoveToElement);
+  CAPSIM_LIBXML2(xmlTextReaderCurrentNode);
+  CAPSIM_LIBXML2(xmlTextReaderGetParserLineNumber);
+  CAPSIM_LIBXML2(xmlGetLineNo);
+#undef CAPSIM_LIBXML2
+
+  // xmlFree: libxml2's deallocator for the strings it returns. The library
+  // exports it as a variable (an application may replace it), read at each
+  // call.
+  void free(void* memory) const;
+
+ private:
+  xmlFreeFunc* free_variable_;
+};
+
+// The table, opened once for the process (from any thread). A library that
+// cannot be loaded is refused at each call with std::runtime_error.
+const Libxml2& libxml2();
+
+}  // namespace capsim::scene_file
