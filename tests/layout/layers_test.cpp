@@ -98,13 +98,13 @@ class LayerCheck {
       const std::string where = path + ":" + std::to_string(n) + ": \"" + target + "\"";
       const std::optional<std::string> file = resolve(target);
       if (!file) {
-        out.push_back(where + " is not a header by its path from include/, src/, cap_sim/ or tests/");
+        out.push_back(where + " is not a header by its path from include/, src/, cap_sim/, tests/ or bench/");
         continue;
       }
       const std::optional<std::string> to = layer_of(*file);
       if (!to) {
         if (!layer || path.rfind("tests/", 0) == 0) continue;  // test helpers, from tests
-        out.push_back(where + " is a test helper, included by the product");
+        out.push_back(where + " is a test or benchmark helper, included by the product");
         continue;
       }
       if (!layer || *layer == "?" || *to == "?") continue;
@@ -115,9 +115,10 @@ class LayerCheck {
   }
 
  private:
-  // The file an include names, from the roots the build puts on the path.
+  // The file an include names, from the roots the build puts on the path
+  // (bench/ for the benchmarks' code their tests share).
   std::optional<std::string> resolve(const std::string& target) const {
-    for (const char* r : {"include", "src", "cap_sim", "tests"}) {
+    for (const char* r : {"include", "src", "cap_sim", "tests", "bench"}) {
       const fs::path p = fs::path(r) / target;
       if (fs::is_regular_file(root_ / p)) return p.generic_string();
     }
