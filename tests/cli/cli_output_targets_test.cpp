@@ -52,7 +52,7 @@ class CliOutputTargets : public ::testing::TestWithParam<User> {
   void SetUp() override {
     if (GetParam() == User::Invoker) return;
     std::string why_not;
-    launcher_ = unprivileged_launcher(why_not);
+    launcher_ = unprivileged_launcher(why_not, {kBalls});
     if (launcher_.empty()) GTEST_SKIP() << why_not;
   }
 

@@ -11,14 +11,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace capsim::testing {
 
 inline constexpr int kNobody = 65534;
 
-// The launcher that runs capsim as nobody; "" with the reason in why_not when
+// The launcher that runs capsim as nobody, who must also be able to read
+// `inputs` (the scene files the runs name); "" with the reason in why_not when
 // that cannot be done.
-inline std::string unprivileged_launcher(std::string& why_not) {
+inline std::string unprivileged_launcher(std::string& why_not, const std::vector<std::string>& inputs = {}) {
   if (::geteuid() != 0) {
     why_not = "the tests run as an ordinary user already: the run as the invoker is the unprivileged one";
     return "";
@@ -28,6 +30,14 @@ inline std::string unprivileged_launcher(std::string& why_not) {
   if (std::system(probe.c_str()) != 0) {
     why_not = "setpriv cannot run capsim as uid 65534 (setpriv missing, or the binary out of that user's reach)";
     return "";
+  }
+  for (const std::string& input : inputs) {
+    if (std::system((launcher + " test -r '" + input + "'").c_str()) != 0) {
+      why_not = "uid 65534 cannot read " + input +
+                ": a directory above it is closed to other users (mode 0700, as mktemp -d makes one); these "
+                "cases need the checkout readable by all";
+      return "";
+    }
   }
   return launcher;
 }
