@@ -3,12 +3,12 @@
 //
 // Each library the dynamic loader maps at start costs every run of capsim its
 // loading and relocation, needed or not: lib3MF brought libzip and libcrypto,
-// and libxml2 brought ICU, to every run, though only import() of a .3mf, .amf
-// or .svg file calls them. Such a library is
-// named here by its soname and opened by dlopen on first use; its functions
-// are found by name. Only libraries with a C interface can be reached this way
-// (a function is found by its unmangled name). docs/performance.md gives what
-// this saves.
+// libxml2 brought ICU, and the font libraries brought GLib, to every run,
+// though only import() of a .3mf, .amf or .svg file and text() call them.
+// Such a library is named here by its soname and opened by dlopen on first
+// use; its functions are found by name. Only libraries with a C interface can
+// be reached this way (a function is found by its unmangled name).
+// docs/performance.md gives what this saves.
 
 #include <mutex>
 #include <string>

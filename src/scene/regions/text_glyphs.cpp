@@ -1,20 +1,16 @@
 #include "scene/regions/text_glyphs.h"
 
+#include "scene/regions/font_libraries.h"
+
 #include <fmt/core.h>
-#include <fontconfig/fontconfig.h>
-#include <ft2build.h>
-#include FT_FREETYPE_H
-#include FT_GLYPH_H
-#include FT_OUTLINE_H
 #include FT_TRUETYPE_IDS_H
-#include <hb-ft.h>
-#include <hb.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <stdexcept>
 
 namespace capsim {
 
@@ -29,6 +25,16 @@ constexpr double kUnscale = 1.0 / 1.024e5;
 constexpr double kGridFine = 0.00000095367431640625;
 constexpr int kMaxFragments = 1000000;
 
+// FreeType, HarfBuzz and fontconfig, opened on the first text(); libraries
+// that cannot be loaded refuse it as any other text() error.
+const FontLibraries& fonts() {
+  try {
+    return font_libraries();
+  } catch (const std::runtime_error& e) {
+    throw TextError(e.what());
+  }
+}
+
 // fontconfig's configuration is read once (it scans the font directories);
 // a lookup holds the lock, as fontconfig's matching is not documented as
 // thread-safe.
@@ -39,8 +45,8 @@ std::mutex& fontconfig_mutex() {
 
 // Destroyed at exit, so that a leak checker sees fontconfig's memory freed.
 FcConfig* fontconfig() {
-  static const std::unique_ptr<FcConfig, decltype(&FcConfigDestroy)> config(FcInitLoadConfigAndFonts(),
-                                                                             FcConfigDestroy);
+  static const std::unique_ptr<FcConfig, decltype(&FcConfigDestroy)> config(fonts().FcInitLoadConfigAndFonts(),
+                                                                             fonts().FcConfigDestroy);
   return config.get();
 }
 
@@ -60,20 +66,20 @@ FontFile find_font(const std::string& name) {
   FcConfig* config = fontconfig();
   if (config == nullptr) throw TextError("fontconfig could not read its configuration");
   const std::unique_ptr<FcPattern, decltype(&FcPatternDestroy)> pattern(
-      FcNameParse(reinterpret_cast<const FcChar8*>(lookup.c_str())), FcPatternDestroy);
+      fonts().FcNameParse(reinterpret_cast<const FcChar8*>(lookup.c_str())), fonts().FcPatternDestroy);
   if (!pattern) throw TextError("font \"" + name + "\": not a fontconfig font name");
-  FcPatternAddBool(pattern.get(), FC_OUTLINE, FcTrue);
-  FcPatternAddBool(pattern.get(), FC_SCALABLE, FcTrue);
-  FcConfigSubstitute(config, pattern.get(), FcMatchPattern);
-  FcDefaultSubstitute(pattern.get());
+  fonts().FcPatternAddBool(pattern.get(), FC_OUTLINE, FcTrue);
+  fonts().FcPatternAddBool(pattern.get(), FC_SCALABLE, FcTrue);
+  fonts().FcConfigSubstitute(config, pattern.get(), FcMatchPattern);
+  fonts().FcDefaultSubstitute(pattern.get());
   FcResult result = FcResultNoMatch;
   const std::unique_ptr<FcPattern, decltype(&FcPatternDestroy)> match(
-      FcFontMatch(config, pattern.get(), &result), FcPatternDestroy);
+      fonts().FcFontMatch(config, pattern.get(), &result), fonts().FcPatternDestroy);
   FcChar8* file = nullptr;
-  if (!match || FcPatternGetString(match.get(), FC_FILE, 0, &file) != FcResultMatch)
+  if (!match || fonts().FcPatternGetString(match.get(), FC_FILE, 0, &file) != FcResultMatch)
     throw TextError("font \"" + lookup + "\": fontconfig finds no scalable font (install fonts-liberation2)");
   FontFile found{reinterpret_cast<const char*>(file), 0};
-  FcPatternGetInteger(match.get(), FC_INDEX, 0, &found.index);
+  fonts().FcPatternGetInteger(match.get(), FC_INDEX, 0, &found.index);
   return found;
 }
 
@@ -81,11 +87,11 @@ struct FreeType {
   FT_Library library = nullptr;
   FT_Face face = nullptr;
   FreeType() {
-    if (FT_Init_FreeType(&library) != 0) throw TextError("FreeType could not start");
+    if (fonts().FT_Init_FreeType(&library) != 0) throw TextError("FreeType could not start");
   }
   ~FreeType() {
-    if (face != nullptr) FT_Done_Face(face);
-    FT_Done_FreeType(library);
+    if (face != nullptr) fonts().FT_Done_Face(face);
+    fonts().FT_Done_FreeType(library);
   }
   FreeType(const FreeType&) = delete;
   FreeType& operator=(const FreeType&) = delete;
@@ -94,7 +100,7 @@ struct FreeType {
 // FontCache::find_face_fontconfig's choice of character map: Unicode, else
 // the first of OpenSCAD's list the font has.
 void select_charmap(FT_Face face) {
-  if (FT_Select_Charmap(face, FT_ENCODING_UNICODE) == 0) return;
+  if (fonts().FT_Select_Charmap(face, FT_ENCODING_UNICODE) == 0) return;
   const int wanted[][2] = {{TT_PLATFORM_MICROSOFT, TT_MS_ID_UNICODE_CS}, {TT_PLATFORM_ISO, TT_ISO_ID_10646},
                            {TT_PLATFORM_APPLE_UNICODE, -1},         {TT_PLATFORM_MICROSOFT, TT_MS_ID_SYMBOL_CS},
                            {TT_PLATFORM_MACINTOSH, TT_MAC_ID_ROMAN}, {TT_PLATFORM_ISO, TT_ISO_ID_8859_1},
@@ -103,7 +109,7 @@ void select_charmap(FT_Face face) {
     for (int i = 0; i < face->num_charmaps; ++i) {
       const FT_CharMap map = face->charmaps[i];
       if (map->platform_id == platform && (encoding == -1 || map->encoding_id == encoding) &&
-          FT_Set_Charmap(face, map) == 0)
+          fonts().FT_Set_Charmap(face, map) == 0)
         return;
     }
 }
@@ -116,30 +122,30 @@ bool is_ignored_script(hb_script_t script) {
 // FreetypeRenderer::detect_properties: the one script of the text's
 // characters (unknown when they mix scripts), and the script's direction.
 void detect_properties(TextSpec& spec) {
-  hb_script_t script = hb_script_from_string(spec.script.c_str(), -1);
+  hb_script_t script = fonts().hb_script_from_string(spec.script.c_str(), -1);
   if (script == HB_SCRIPT_INVALID) {
-    hb_buffer_t* buffer = hb_buffer_create();
-    hb_buffer_add_utf8(buffer, spec.text.c_str(), static_cast<int>(spec.text.size()), 0,
+    hb_buffer_t* buffer = fonts().hb_buffer_create();
+    fonts().hb_buffer_add_utf8(buffer, spec.text.c_str(), static_cast<int>(spec.text.size()), 0,
                        static_cast<int>(spec.text.size()));
     unsigned count = 0;
-    const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buffer, &count);
+    const hb_glyph_info_t* info = fonts().hb_buffer_get_glyph_infos(buffer, &count);
     for (unsigned i = 0; i < count; ++i) {
-      const hb_script_t s = hb_unicode_script(hb_unicode_funcs_get_default(), info[i].codepoint);
+      const hb_script_t s = fonts().hb_unicode_script(fonts().hb_unicode_funcs_get_default(), info[i].codepoint);
       if (is_ignored_script(s)) continue;
       if (script == HB_SCRIPT_INVALID)
         script = s;
       else if (script != s && script != HB_SCRIPT_UNKNOWN)
         script = HB_SCRIPT_UNKNOWN;
     }
-    hb_buffer_destroy(buffer);
+    fonts().hb_buffer_destroy(buffer);
     if (!is_ignored_script(script)) {
       char tag[5] = {0, 0, 0, 0, 0};
-      hb_tag_to_string(hb_script_to_iso15924_tag(script), tag);
+      fonts().hb_tag_to_string(fonts().hb_script_to_iso15924_tag(script), tag);
       spec.script = tag;
     }
   }
-  if (hb_direction_from_string(spec.direction.c_str(), -1) == HB_DIRECTION_INVALID)
-    spec.direction = hb_direction_to_string(hb_script_get_horizontal_direction(script));
+  if (fonts().hb_direction_from_string(spec.direction.c_str(), -1) == HB_DIRECTION_INVALID)
+    spec.direction = fonts().hb_direction_to_string(fonts().hb_script_get_horizontal_direction(script));
 }
 
 // DrawingCallback: the contours of the glyph being drawn, each vertex placed
@@ -244,7 +250,7 @@ struct GlyphList {
   GlyphList(const GlyphList&) = delete;
   GlyphList& operator=(const GlyphList&) = delete;
   ~GlyphList() {
-    for (const Glyph& g : glyphs) FT_Done_Glyph(g.glyph);
+    for (const Glyph& g : glyphs) fonts().FT_Done_Glyph(g.glyph);
   }
 };
 
@@ -254,24 +260,24 @@ std::vector<TextContour> text_contours(const TextSpec& given) {
   detect_properties(spec);
   const FontFile file = find_font(spec.font);
   FreeType ft;
-  if (FT_New_Face(ft.library, file.path.c_str(), file.index, &ft.face) != 0)
+  if (fonts().FT_New_Face(ft.library, file.path.c_str(), file.index, &ft.face) != 0)
     throw TextError("font file " + file.path + ": FreeType cannot read it");
   select_charmap(ft.face);
-  if (FT_Set_Char_Size(ft.face, 0, static_cast<FT_F26Dot6>(kScale), 100, 100) != 0)
+  if (fonts().FT_Set_Char_Size(ft.face, 0, static_cast<FT_F26Dot6>(kScale), 100, 100) != 0)
     throw TextError("font file " + file.path + ": FreeType cannot size it");
 
-  hb_font_t* font = hb_ft_font_create(ft.face, nullptr);
-  hb_buffer_t* buffer = hb_buffer_create();
-  hb_buffer_set_direction(buffer, hb_direction_from_string(spec.direction.c_str(), -1));
-  hb_buffer_set_script(buffer, hb_script_from_string(spec.script.c_str(), -1));
-  hb_buffer_set_language(buffer, hb_language_from_string(spec.language.c_str(), -1));
-  hb_buffer_add_utf8(buffer, spec.text.c_str(), static_cast<int>(spec.text.size()), 0,
+  hb_font_t* font = fonts().hb_ft_font_create(ft.face, nullptr);
+  hb_buffer_t* buffer = fonts().hb_buffer_create();
+  fonts().hb_buffer_set_direction(buffer, fonts().hb_direction_from_string(spec.direction.c_str(), -1));
+  fonts().hb_buffer_set_script(buffer, fonts().hb_script_from_string(spec.script.c_str(), -1));
+  fonts().hb_buffer_set_language(buffer, fonts().hb_language_from_string(spec.language.c_str(), -1));
+  fonts().hb_buffer_add_utf8(buffer, spec.text.c_str(), static_cast<int>(spec.text.size()), 0,
                      static_cast<int>(spec.text.size()));
-  hb_shape(font, buffer, nullptr, 0);
+  fonts().hb_shape(font, buffer, nullptr, 0);
   unsigned count = 0;
-  const hb_glyph_info_t* info = hb_buffer_get_glyph_infos(buffer, &count);
-  const hb_glyph_position_t* positions = hb_buffer_get_glyph_positions(buffer, &count);
-  const bool horizontal = HB_DIRECTION_IS_HORIZONTAL(hb_buffer_get_direction(buffer));
+  const hb_glyph_info_t* info = fonts().hb_buffer_get_glyph_infos(buffer, &count);
+  const hb_glyph_position_t* positions = fonts().hb_buffer_get_glyph_positions(buffer, &count);
+  const bool horizontal = HB_DIRECTION_IS_HORIZONTAL(fonts().hb_buffer_get_direction(buffer));
 
   // A glyph FreeType cannot load is left out, as OpenSCAD leaves it out.
   GlyphList list;
@@ -279,18 +285,18 @@ std::vector<TextContour> text_contours(const TextSpec& given) {
   glyphs.reserve(count);  // so that no push_back throws and loses a glyph
   for (unsigned i = 0; i < count; ++i) {
     Glyph g;
-    if (FT_Load_Glyph(ft.face, info[i].codepoint, FT_LOAD_DEFAULT) != 0) continue;
-    if (FT_Get_Glyph(ft.face->glyph, &g.glyph) != 0) continue;
+    if (fonts().FT_Load_Glyph(ft.face, info[i].codepoint, FT_LOAD_DEFAULT) != 0) continue;
+    if (fonts().FT_Get_Glyph(ft.face->glyph, &g.glyph) != 0) continue;
     g.position = positions[i];
     glyphs.push_back(g);
   }
-  hb_buffer_destroy(buffer);
-  hb_font_destroy(font);
+  fonts().hb_buffer_destroy(buffer);
+  fonts().hb_font_destroy(font);
 
   double width = 0, ascend = 0, descend = 0;
   for (const Glyph& g : glyphs) {
     FT_BBox box;
-    FT_Glyph_Get_CBox(g.glyph, FT_GLYPH_BBOX_GRIDFIT, &box);
+    fonts().FT_Glyph_Get_CBox(g.glyph, FT_GLYPH_BBOX_GRIDFIT, &box);
     if (horizontal) {
       width += g.position.x_advance * kUnscale * spec.spacing;
       ascend = std::max(ascend, std::max(0.0, box.yMax * kUnscale));
@@ -313,7 +319,7 @@ std::vector<TextContour> text_contours(const TextSpec& given) {
     drawing.offset = {dx + g.position.x_offset * kUnscale, dy + g.position.y_offset * kUnscale};
     if (g.glyph->format == FT_GLYPH_FORMAT_OUTLINE) {
       FT_Outline outline = reinterpret_cast<FT_OutlineGlyph>(g.glyph)->outline;
-      FT_Outline_Decompose(&outline, &funcs, &drawing);
+      fonts().FT_Outline_Decompose(&outline, &funcs, &drawing);
     }
     drawing.advance += glm::dvec2(g.position.x_advance * kUnscale * spec.spacing,
                                   g.position.y_advance * kUnscale * spec.spacing);
