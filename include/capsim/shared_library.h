@@ -37,8 +37,6 @@ class SharedLibrary {
     return static_cast<T*>(symbol(name));
   }
 
-  const std::string& soname() const { return soname_; }
-
  private:
   void* symbol(const char* name) const;
 

@@ -4,18 +4,20 @@
 // (capsim/shared_library.h): libxml2 brings ICU, which every run would
 // otherwise load and relocate.
 
-#include <libxml/xmlreader.h>
+#include "capsim/shared_library.h"
 
-#include <string>
+#include <libxml/xmlreader.h>
 
 namespace capsim::scene_file {
 
-struct Libxml2 {
-  // Fills the table, opening the library; throws std::runtime_error when it
-  // cannot, naming the library and why.
-  Libxml2();
+// libxml2 itself, of the soname the build compiled against (CMakeLists.txt),
+// so the functions loaded are the ones the header declares.
+const SharedLibrary& libxml2_shared_library();
 
-#define CAPSIM_LIBXML2(name) decltype(&::name) name
+// Making the table opens the library; it throws std::runtime_error when the
+// library cannot be opened, naming it and why.
+struct Libxml2 {
+#define CAPSIM_LIBXML2(name) decltype(&::name) name = libxml2_shared_library().function<decltype(&::name)>(#name)
   CAPSIM_LIBXML2(xmlReaderForMemory);
   CAPSIM_LIBXML2(xmlFreeTextReader);
   CAPSIM_LIBXML2(xmlTextReaderSetStructuredErrorHandler);
@@ -39,7 +41,7 @@ struct Libxml2 {
   void free(void* memory) const;
 
  private:
-  xmlFreeFunc* free_variable_;
+  xmlFreeFunc* free_variable_ = libxml2_shared_library().variable<xmlFreeFunc>("xmlFree");
 };
 
 // The table, opened once for the process (from any thread). A library that

@@ -43,7 +43,7 @@ class AmfReader {
   AmfReader(const std::string& path, const std::string& data) : path_(path), xml_(opened_libxml2(path)) {
     // No entity substitution and no network: a file reads nothing but itself.
     reader_ = xml_.xmlReaderForMemory(data.data(), static_cast<int>(data.size()), path.c_str(), nullptr,
-                                 XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
+                                      XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING);
     if (!reader_) throw MeshFileError(fmt::format("{}: libxml2 cannot start reading it", path));
     xml_.xmlTextReaderSetStructuredErrorHandler(reader_, &AmfReader::on_error, this);
   }

@@ -418,7 +418,8 @@ class Reader {
     // No network, no external DTD, no entity substitution: a drawing reads
     // nothing but itself.
     std::unique_ptr<xmlTextReader, ReaderFree> reader(
-        xml_.xmlReaderForMemory(text_.data(), static_cast<int>(text_.size()), nullptr, nullptr, XML_PARSE_NONET | XML_PARSE_BIG_LINES));
+        xml_.xmlReaderForMemory(text_.data(), static_cast<int>(text_.size()), nullptr, nullptr,
+                                XML_PARSE_NONET | XML_PARSE_BIG_LINES));
     if (!reader) fail(1, "the XML reader cannot start");
     XmlErrors errors;
     xml_.xmlTextReaderSetStructuredErrorHandler(reader.get(), record_error, &errors);
