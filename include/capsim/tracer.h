@@ -94,6 +94,10 @@ class Tracer {
     int voxel = 0;
     std::vector<Node> nodes;  // nodes[0] is the root
     std::vector<std::uint32_t> order;  // positions in the voxel's list, leaf by leaf
+    // The voxel's primitives that some other voxel holds too, in the voxel's
+    // order: the only ones a ray can have met before it comes here, or meet
+    // again after it leaves.
+    std::vector<std::uint32_t> shared;
     glm::dvec3 center{0};  // of the spheres' box, and
     double reach = 0;      // its half diagonal: the scale of the filter's rounding margin
   };

@@ -22,13 +22,20 @@ ScreenSample ScreenSample::from(const PixelSample& s) {
 
 namespace {
 
-// Six encodings per pair of corners, the most frequent in an antialiased
-// frame: by the table, inlined (linear_to_srgb8 is the same encoding, a call
-// away).
-int colour_distance(const ScreenSample& a, const ScreenSample& b) {
+// A sample's colour as the 8-bit sRGB codes the threshold compares, by the
+// table (linear_to_srgb8 is the same encoding, a call away): a corner
+// difference encodes each of its four corners once, not once per pair.
+struct Codes {
+  int r, g, b;
+};
+
+Codes srgb8_codes(const ScreenSample& s) {
   static const Srgb8Encoder& encode = srgb8_encoder();
-  return std::abs(encode(a.r) - encode(b.r)) + std::abs(encode(a.g) - encode(b.g)) +
-         std::abs(encode(a.b) - encode(b.b));
+  return {encode(s.r), encode(s.g), encode(s.b)};
+}
+
+int colour_distance(const Codes& a, const Codes& b) {
+  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
 }
 
 // A square's mean colour and coverage, in double so that the order of the sums
@@ -87,8 +94,9 @@ class Subdivision {
 
 double corner_difference(const ScreenSample& a, const ScreenSample& b, const ScreenSample& c,
                          const ScreenSample& d) {
-  const int largest = std::max({colour_distance(a, b), colour_distance(a, c), colour_distance(a, d),
-                                colour_distance(b, c), colour_distance(b, d), colour_distance(c, d)});
+  const Codes ca = srgb8_codes(a), cb = srgb8_codes(b), cc = srgb8_codes(c), cd = srgb8_codes(d);
+  const int largest = std::max({colour_distance(ca, cb), colour_distance(ca, cc), colour_distance(ca, cd),
+                                colour_distance(cb, cc), colour_distance(cb, cd), colour_distance(cc, cd)});
   return largest / 255.0;
 }
 

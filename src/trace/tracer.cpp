@@ -152,9 +152,11 @@ using SphereFilter = Tracer::SphereFilter;
 
 // The filter of a voxel whose entries are all round spheres, or none. Median
 // splits along the longest axis of the centres keep the depth at most
-// log2 of the spheres, well within traverse()'s stack.
+// log2 of the spheres, well within traverse()'s stack. `placements` counts,
+// per primitive, its entries in the whole grid.
 std::optional<SphereFilter> build_sphere_filter(int v, std::span<const std::uint32_t> voxel,
-                                                const std::vector<RoundSphereSlot>& spheres) {
+                                                const std::vector<RoundSphereSlot>& spheres,
+                                                const std::vector<std::uint32_t>& placements) {
   std::vector<Aabb> boxes;
   boxes.reserve(voxel.size());
   for (const std::uint32_t p : voxel) {
@@ -165,6 +167,8 @@ std::optional<SphereFilter> build_sphere_filter(int v, std::span<const std::uint
   }
   SphereFilter f;
   f.voxel = v;
+  for (const std::uint32_t p : voxel)
+    if (placements[p] > 1) f.shared.push_back(p);
   f.order.resize(voxel.size());
   for (std::uint32_t k = 0; k < f.order.size(); ++k) f.order[k] = k;
   const auto bounds = [&](std::uint32_t first, std::uint32_t count) {
@@ -247,9 +251,13 @@ void traverse(const SphereFilter& f, const Ray& ray, double margin, Visit visit)
 }
 
 // meet_crowded_voxel for a voxel with a filter, to the bit: the same
-// crossings in the same order, the same toggles, counts and stamps. Every
-// sphere the ray has not met yet counts as a test, as the machine makes one;
-// only those the filter names are intersected, in the voxel's order.
+// crossings in the same order, the same toggles and counts. Every sphere the
+// ray has not met yet counts as a test, as the machine makes one; only those
+// the filter names are intersected, in the voxel's order. Only the shared
+// spheres are looked up and stamped in the mailbox: a sphere no other voxel
+// holds cannot have been met before this voxel, and the walk never asks for
+// it again (on the coarsest grids, the lattice's thousands of spheres in one
+// voxel, that is all of them).
 // The margin covers the rounding of the filter's boxes and slab tests and of
 // intersect_round_sphere, each within a few ulps of the coordinates' scale
 // (the origin's, the spheres'); a sphere whose exact test succeeds is never
@@ -263,12 +271,14 @@ void traverse(const SphereFilter& f, const Ray& ray, double margin, Visit visit)
   traverse(f, ray, 1e-8 * scale, [&](std::uint32_t k) {
     if (s.mailbox[voxel[k]] != s.stamp) candidates.push_back(k);
   });
-  std::uint64_t unmet = 0;
-  for (const std::uint32_t p : voxel) {
-    unmet += s.mailbox[p] != s.stamp;
-    s.mailbox[p] = s.stamp;
+  const std::uint32_t stamp = s.stamp;
+  std::uint32_t* const mailbox = s.mailbox.data();
+  std::uint64_t met = 0;
+  for (const std::uint32_t p : f.shared) {
+    met += mailbox[p] == stamp;
+    mailbox[p] = stamp;
   }
-  ops.sphere_tests += unmet;
+  ops.sphere_tests += voxel.size() - met;
   std::sort(candidates.begin(), candidates.end());
   const auto add = [&](const Crossing& c) { s.fresh.push_back(c); };
   for (const std::uint32_t k : candidates) meet_round_sphere(voxel[k], spheres[voxel[k]], ray, s, ops, add);
@@ -319,9 +329,11 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   if (!crowded_voxels_ || options.unfiltered_crowded_voxels || scene.grid.largest_voxel < kFilteredVoxel) return;
   const VoxelGrid& grid = scene.grid;
   const int voxels = grid.n * grid.n * grid.n;
+  std::vector<std::uint32_t> placements(scene.prims.size(), 0);
+  for (const std::uint32_t p : grid.items) ++placements[p];
   for (int v = 0; v < voxels; ++v) {
     if (grid.offsets[v + 1] - grid.offsets[v] < kFilteredVoxel) continue;
-    if (auto f = build_sphere_filter(v, grid.voxel(v), spheres_)) filters_.push_back(std::move(*f));
+    if (auto f = build_sphere_filter(v, grid.voxel(v), spheres_, placements)) filters_.push_back(std::move(*f));
   }
 }
 
