@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace capsim::sim {
 
@@ -254,17 +255,33 @@ CostBreakdown work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTab
   return b;
 }
 
-WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTable& c) {
-  WideBreakdown w;
-  for (const CostTermInfo& t : kCostTerms) {
-    if (t.payer != CostPayer::Cell) continue;
+namespace {
+
+// Term I of kCostTerms, if a cell's, added to w. One function per term, so
+// that its count is read in place rather than through a pointer: a float
+// screen prices every pixel on its own.
+template <std::size_t I>
+void add_wide_term(WideBreakdown& w, const OpCounts& ops, std::uint64_t pixels, const CostTable& c) {
+  constexpr CostTermInfo t = kCostTerms[I];
+  if constexpr (t.payer == CostPayer::Cell) {
     // The voxels visited are counted as set-ups plus steps, which cannot
     // overflow in 128 bits.
-    const unsigned __int128 n = t.term == CostTerm::VoxelVisit
-                                    ? static_cast<unsigned __int128>(ops.dda_setups) + ops.dda_steps
-                                    : t.cell_count(ops, pixels);
+    unsigned __int128 n;
+    if constexpr (t.term == CostTerm::VoxelVisit)
+      n = static_cast<unsigned __int128>(ops.dda_setups) + ops.dda_steps;
+    else
+      n = t.cell_count(ops, pixels);
     w.cycles[static_cast<int>(t.category)] += n * c[t.term].count();
   }
+}
+
+}  // namespace
+
+WideBreakdown wide_work_cost(const OpCounts& ops, std::uint64_t pixels, const CostTable& c) {
+  WideBreakdown w;
+  [&]<std::size_t... I>(std::index_sequence<I...>) {
+    (add_wide_term<I>(w, ops, pixels, c), ...);
+  }(std::make_index_sequence<kCostTermCount>{});
   return w;
 }
 
