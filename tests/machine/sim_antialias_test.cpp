@@ -98,6 +98,30 @@ TEST(SimAntialias, ExchangeDeliversExactlyTheCornersEachCellNeeds) {
       }
 }
 
+TEST(SimAntialias, CornersNeededCountsWhatEachCellNeeds) {
+  // Counted from the rows and columns apart, against the pixel-by-pixel sets
+  // and the exchange's own lists: every mode, grids and screens of one row
+  // or column, sides that divide and sides that do not, every dot shift.
+  for (PixelMode mode : {PixelMode::Dot, PixelMode::Line, PixelMode::Block})
+    for (CellGrid grid : {CellGrid{1, 1}, CellGrid{1, 3}, CellGrid{3, 1}, CellGrid{2, 2}, CellGrid{3, 5},
+                          CellGrid{4, 4}})
+      for (const auto& [w, h] : {std::pair{1, 1}, std::pair{1, 9}, std::pair{9, 1}, std::pair{2, 2},
+                                 std::pair{13, 11}, std::pair{16, 16}, std::pair{40, 3}})
+        for (int frame = 0; frame < (mode == PixelMode::Dot ? grid.cell_count() : 1); ++frame) {
+          const std::string where = std::string(to_string(mode)) + " " + to_string(grid) + " " +
+                                    std::to_string(w) + "x" + std::to_string(h) + " frame " + std::to_string(frame);
+          const WindowLayout layout(mode, grid, w, h,
+                                    mode == PixelMode::Dot ? dot_shift_for_frame(grid, frame) : DotShift{});
+          const std::vector<std::uint64_t> counted = corners_needed(layout);
+          const CornerExchange plan(layout);
+          ASSERT_EQ(counted.size(), static_cast<std::size_t>(grid.cell_count())) << where;
+          for (CellId c = 0; c < grid.cell_count(); ++c) {
+            EXPECT_EQ(counted[c], corners_needed(layout, c).size()) << where << " cell " << c;
+            EXPECT_EQ(counted[c], plan.needs(c).size()) << where << " cell " << c;
+          }
+        }
+}
+
 TEST(SimAntialias, ScreenEqualsTheAntialiasedRenderInEveryModeAndThreadCount) {
   const PreparedScene scene = balls(37, 29);
   const Tracer tracer(scene, TraceOptions{});

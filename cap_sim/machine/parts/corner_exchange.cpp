@@ -67,9 +67,71 @@ void for_each_need(const WindowLayout& layout, Need need) {
 
 }  // namespace
 
+// Counts the needs for_each_need would name, by the owners' split into a row
+// part R[y] and a column part K[x] (OwnerTable): pixels share an owner
+// exactly when both parts agree. Call a row y "split" when R[y - 1] != R[y],
+// a column x when K[x - 1] != K[x]. An inner corner (0 < x < W, 0 < y < H),
+// owned by (x, y), is needed by the owners of (x - 1, y - 1), (x, y - 1) and
+// (x - 1, y) that are not its own:
+//   row and column split: all three, each a different cell;
+//   only the row split:   (x, y - 1);
+//   only the column:      (x - 1, y);
+//   neither:              none.
+// So the owner of (x, y - 1) needs it where the row splits, whatever the
+// column, the owner of (x - 1, y) where the column splits, and that of
+// (x - 1, y - 1) where both do: each a product of a count over the rows and
+// one over the columns. On the screen's edge only one pixel besides the
+// owner touches a corner: (x - 1, 0) on the top row, (0, y - 1) on the left
+// column, (W - 1, y - 1) on the right column (owned by (W - 1, y)) and
+// (x - 1, H - 1) on the bottom row (owned by (x, H - 1)), each needing it
+// where its row or column splits. The four screen corners touch only their
+// owner's pixel.
 std::vector<std::uint64_t> corners_needed(const WindowLayout& layout) {
-  std::vector<std::uint64_t> out(static_cast<std::size_t>(layout.grid().cell_count()), 0);
-  for_each_need(layout, [&](int, int, CellId, CellId n) { ++out[n]; });
+  const int width = layout.width(), height = layout.height();
+  const int cells = layout.grid().cell_count();
+  const OwnerTable owners(layout);
+  const auto R = [&](int y) { return owners.row_cell(y); };
+  const auto K = [&](int x) { return owners.col_cell(x); };
+  const auto row_split = [&](int y) { return R(y - 1) != R(y); };
+  const auto col_split = [&](int x) { return K(x - 1) != K(x); };
+  std::vector<std::uint64_t> out(static_cast<std::size_t>(cells), 0);
+
+  // Counts by part over the inner rows and columns: all of them, and the
+  // split ones by the part before the split.
+  std::vector<std::uint64_t> rows_all(static_cast<std::size_t>(cells), 0), rows_split(rows_all.size(), 0);
+  std::vector<std::uint64_t> cols_all(static_cast<std::size_t>(cells), 0), cols_split(cols_all.size(), 0);
+  for (int y = 1; y < height; ++y) {
+    ++rows_all[R(y)];
+    if (row_split(y)) ++rows_split[R(y - 1)];
+  }
+  for (int x = 1; x < width; ++x) {
+    ++cols_all[K(x)];
+    if (col_split(x)) ++cols_split[K(x - 1)];
+  }
+  // The parts that occur, for the products.
+  std::vector<int> row_parts, col_parts;
+  for (int r = 0; r < cells; ++r)
+    if (rows_all[r] || rows_split[r]) row_parts.push_back(r);
+  for (int k = 0; k < cells; ++k)
+    if (cols_all[k] || cols_split[k]) col_parts.push_back(k);
+  for (const int r : row_parts)
+    for (const int k : col_parts) {
+      std::uint64_t& n = out[static_cast<std::size_t>(r + k)];
+      n += rows_split[r] * cols_all[k];    // (x, y - 1), where the row splits
+      n += rows_all[r] * cols_split[k];    // (x - 1, y), where the column splits
+      n += rows_split[r] * cols_split[k];  // (x - 1, y - 1), where both do
+    }
+  // The edges.
+  for (int x = 1; x < width; ++x)
+    if (col_split(x)) {
+      ++out[R(0) + K(x - 1)];           // top row
+      ++out[R(height - 1) + K(x - 1)];  // bottom row
+    }
+  for (int y = 1; y < height; ++y)
+    if (row_split(y)) {
+      ++out[R(y - 1) + K(0)];          // left column
+      ++out[R(y - 1) + K(width - 1)];  // right column
+    }
   return out;
 }
 

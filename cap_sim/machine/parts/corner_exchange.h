@@ -82,7 +82,8 @@ class CornerExchange {
 };
 
 // Per cell, how many corners of one frame it needs from other cells: the size
-// of CornerExchange(layout).needs(cell), counted without planning messages.
+// of CornerExchange(layout).needs(cell), counted without planning messages,
+// from the rows and the columns apart (O(W + H + cells), not O(W x H)).
 std::vector<std::uint64_t> corners_needed(const WindowLayout& layout);
 
 }  // namespace capsim::sim

@@ -108,12 +108,17 @@ class WindowLayout {
 // for the loops that visit every pixel. In every mode the owner splits into a
 // part of the row and a part of the column:
 //   cell = row_cell[y] + col_cell[x],  video index = row_step[y] * col_step[x] + col_index[x].
+// The parts never collide: row parts are multiples of C and column parts
+// below C (block, dot), or column parts are all 0 (line). So two pixels have
+// one owner exactly when their row parts agree and their column parts agree.
 class OwnerTable {
  public:
   explicit OwnerTable(const WindowLayout& layout);
   PixelOwner owner(int x, int y) const {
     return {row_cell_[y] + col_cell_[x], row_step_[y] * col_step_[x] + col_index_[x]};
   }
+  int row_cell(int y) const { return row_cell_[y]; }
+  int col_cell(int x) const { return col_cell_[x]; }
 
  private:
   std::vector<int> row_cell_, row_step_;
