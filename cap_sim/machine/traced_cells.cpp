@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -191,8 +192,9 @@ struct TracedAhead {
   const unsigned char* srgb8(int x, int y) const { return screen.srgb8.data() + at(x, y) * 3; }
   // The corners' costs handed on in row order, on this thread.
   CornerSamples corners(int, const CornerCostSink& cost, Progress* progress) const {
+    const std::size_t row = static_cast<std::size_t>(screen.width) + 1;
     for (int y = 0; y <= screen.height; ++y)
-      for (int x = 0; x <= screen.width; ++x) cost(x, y, screen.corner_ops[screen.corners.index(x, y)]);
+      cost(y, std::span<const OpCounts>(screen.corner_ops).subspan(static_cast<std::size_t>(y) * row, row));
     if (progress) progress->advance(static_cast<std::uint64_t>(screen.width + 1) * (screen.height + 1));
     return screen.corners;
   }
@@ -230,29 +232,32 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
   tbb::enumerable_thread_specific<Sums> corner_sums([&] { return Sums(cell_count); });
   const CornerSamples corners = source.corners(
       threads,
-      [&](int x, int y, const OpCounts& ops) {
+      [&](int y, std::span<const OpCounts> row) {
         Sums& sum = corner_sums.local();
-        if (tracing == CornerTracing::ByOwner) {
-          const CellId c = owner(x, y).cell;
-          sum.ops[c] += ops;
-          ++sum.items[c];
-        } else {
-          // Corner (x, y) is a corner of pixels (x - 1 .. x, y - 1 .. y):
-          // each distinct window among theirs traces it.
-          CellId needers[4];
-          int count = 0;
-          for (int py = y - 1; py <= y; ++py)
-            for (int px = x - 1; px <= x; ++px) {
-              if (px < 0 || py < 0 || px >= width || py >= height) continue;
-              const CellId c = owners.owner(px, py).cell;
-              if (std::find(needers, needers + count, c) == needers + count) needers[count++] = c;
+        for (int x = 0; x <= width; ++x) {
+          const OpCounts& ops = row[static_cast<std::size_t>(x)];
+          if (tracing == CornerTracing::ByOwner) {
+            const CellId c = owner(x, y).cell;
+            sum.ops[c] += ops;
+            ++sum.items[c];
+          } else {
+            // Corner (x, y) is a corner of pixels (x - 1 .. x, y - 1 .. y):
+            // each distinct window among theirs traces it.
+            CellId needers[4];
+            int count = 0;
+            for (int py = y - 1; py <= y; ++py)
+              for (int px = x - 1; px <= x; ++px) {
+                if (px < 0 || py < 0 || px >= width || py >= height) continue;
+                const CellId c = owners.owner(px, py).cell;
+                if (std::find(needers, needers + count, c) == needers + count) needers[count++] = c;
+              }
+            for (int i = 0; i < count; ++i) {
+              sum.ops[needers[i]] += ops;
+              ++sum.items[needers[i]];
             }
-          for (int i = 0; i < count; ++i) {
-            sum.ops[needers[i]] += ops;
-            ++sum.items[needers[i]];
           }
+          if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = saturated_cycles(ops, costs);
         }
-        if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = saturated_cycles(ops, costs);
       },
       progress);
 
@@ -409,7 +414,9 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
     t.subdivision_samples.resize(pixels);
     t.corners = trace_corners(
         tracer, threads,
-        [&](int x, int y, const OpCounts& ops) { t.corner_ops[static_cast<std::size_t>(y) * (cam.width + 1) + x] = ops; },
+        [&](int y, std::span<const OpCounts> row) {
+          std::copy(row.begin(), row.end(), t.corner_ops.begin() + static_cast<std::ptrdiff_t>(y) * (cam.width + 1));
+        },
         nullptr);
   }
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });

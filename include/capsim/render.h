@@ -47,9 +47,10 @@ Framebuffer render(const Tracer& tracer, int threads, RenderStats* stats = nullp
 // antialiasing.
 std::uint64_t render_work(int width, int height, const AntialiasOptions& aa);
 
-// Receives the operations each corner sample cost; called from several host
-// threads at once, for different corner rows.
-using CornerCostSink = std::function<void(int x, int y, const OpCounts& ops)>;
+// Receives the operations each corner sample of row y cost, row[x] for
+// corner (x, y); called once per row, from several host threads at once for
+// different rows.
+using CornerCostSink = std::function<void(int y, std::span<const OpCounts> row)>;
 
 // Every corner sample of the screen, traced on host threads (the result does
 // not depend on their number); progress, if given, advances by each corner.

@@ -51,12 +51,15 @@ CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostS
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
   parallel_rows(threads, cam.height + 1, [&](const tbb::blocked_range<int>& rows) {
     Tracer::Scratch& s = scratch.local();
-    for (int y = rows.begin(); y != rows.end(); ++y)
+    std::vector<OpCounts> row(static_cast<std::size_t>(cam.width) + 1);
+    for (int y = rows.begin(); y != rows.end(); ++y) {
       for (int x = 0; x <= cam.width; ++x) {
-        OpCounts ops;
+        OpCounts& ops = row[static_cast<std::size_t>(x)];
+        ops = OpCounts{};
         corners.samples[corners.index(x, y)] = trace_screen_sample(tracer, x, y, s, ops);
-        cost(x, y, ops);
       }
+      cost(y, row);
+    }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * (cam.width + 1));
   });
   return corners;
@@ -73,7 +76,11 @@ void render_rows(const Tracer& tracer, int threads, const RowSink& store, Render
   if (aa.depth > 0) {
     corner_row_ops.resize(cam.height + 1);
     corners = trace_corners(
-        tracer, threads, [&](int, int y, const OpCounts& ops) { corner_row_ops[y] += ops; }, progress);
+        tracer, threads,
+        [&](int y, std::span<const OpCounts> row) {
+          for (const OpCounts& ops : row) corner_row_ops[y] += ops;
+        },
+        progress);
   }
   tbb::enumerable_thread_specific<Worker> workers(
       [&] { return Worker{Tracer::Scratch(tracer.scene()), std::vector<PixelSample>(cam.width)}; });

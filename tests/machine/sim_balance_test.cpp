@@ -254,8 +254,9 @@ TEST(Balance, AntialiasedTilesTraceTheirCornersThemselves) {
   std::vector<std::uint64_t> corner_cost((30 + 1) * (22 + 1), 0);
   (void)trace_corners(
       tracer, 1,
-      [&](int x, int y, const OpCounts& ops) {
-        corner_cost[static_cast<std::size_t>(y) * 31 + x] = pixel_cost(ops, config.profile.costs).total().count();
+      [&](int y, std::span<const OpCounts> row) {
+        for (int x = 0; x <= 30; ++x)
+          corner_cost[static_cast<std::size_t>(y) * 31 + x] = pixel_cost(row[x], config.profile.costs).total().count();
       },
       nullptr);
   std::uint64_t expected = 0;
