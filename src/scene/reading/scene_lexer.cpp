@@ -300,7 +300,8 @@ size_t utf8_sequence_length(std::string_view text, size_t i) {
 
 std::string quoted(std::string_view text) {
   std::string out = "\"";
-  for (size_t i = 0; i < text.size();) {
+  size_t i = 0;
+  for (; i < text.size() && i < kQuotedBytes;) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c >= 0x80) {
       if (size_t n = utf8_sequence_length(text, i)) {
@@ -329,6 +330,7 @@ std::string quoted(std::string_view text) {
     ++i;
   }
   out += '"';
+  if (i < text.size()) out += fmt::format("... ({} bytes in all)", text.size());
   return out;
 }
 

@@ -3,6 +3,7 @@
 // token shapes of OpenSCAD's language are recognised; what they mean is the
 // syntax reader's business (scene_syntax.h).
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -58,6 +59,10 @@ std::string describe(const Token& token);
 // they are, with a backslash before '"' and before a backslash; NUL as \0;
 // newline, tab and carriage return as \n, \t and \r; any other control
 // character, and every byte that is not part of well-formed UTF-8, as \xNN.
+// A text longer than kQuotedBytes shows its first characters up to that many
+// bytes, then `... (N bytes in all)` after the closing quote, so that a message
+// stays a line however long the scene's string is.
+inline constexpr std::size_t kQuotedBytes = 64;
 std::string quoted(std::string_view text);
 
 }  // namespace capsim::scene_file
