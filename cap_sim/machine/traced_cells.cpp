@@ -194,7 +194,7 @@ struct TracedAhead {
   CornerSamples corners(int, const CornerCostSink& cost, Progress* progress) const {
     const std::size_t row = static_cast<std::size_t>(screen.width) + 1;
     for (int y = 0; y <= screen.height; ++y)
-      cost(y, std::span<const OpCounts>(screen.corner_ops).subspan(static_cast<std::size_t>(y) * row, row));
+      cost(y, std::span<const OpCounts>(screen.corner_ops).subspan(screen.corners.index(0, y), row));
     if (progress) progress->advance(static_cast<std::uint64_t>(screen.width + 1) * (screen.height + 1));
     return screen.corners;
   }

@@ -157,6 +157,8 @@ using SphereFilter = Tracer::SphereFilter;
 std::optional<SphereFilter> build_sphere_filter(int v, std::span<const std::uint32_t> voxel,
                                                 const std::vector<RoundSphereSlot>& spheres,
                                                 const std::vector<std::uint32_t>& placements) {
+  SphereFilter f;
+  f.voxel = v;
   std::vector<Aabb> boxes;
   boxes.reserve(voxel.size());
   for (const std::uint32_t p : voxel) {
@@ -164,11 +166,8 @@ std::optional<SphereFilter> build_sphere_filter(int v, std::span<const std::uint
     if (slot.r2 < 0) return std::nullopt;
     const double r = std::sqrt(slot.r2);
     boxes.push_back(Aabb{slot.center - r, slot.center + r});
-  }
-  SphereFilter f;
-  f.voxel = v;
-  for (const std::uint32_t p : voxel)
     if (placements[p] > 1) f.shared.push_back(p);
+  }
   f.order.resize(voxel.size());
   for (std::uint32_t k = 0; k < f.order.size(); ++k) f.order[k] = k;
   const auto bounds = [&](std::uint32_t first, std::uint32_t count) {
