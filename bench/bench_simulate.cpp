@@ -6,8 +6,11 @@
 //   bench_simulate [--benchmark_filter=...]
 // Scene: scenes/balls.csg at 512x512; machine: 8x8 cells, dot mode, cap profile.
 // Arguments: host threads, antialiasing depth (0 or 2).
+// BM_PlanExchange: planning one antialiased frame's corner exchange (phase 2)
+// at 512x512; arguments: pixel mode (0 block, 1 line, 2 dot), grid side.
 
 #include "machine/machine.h"
+#include "machine/parts/corner_exchange.h"
 
 #include "capsim/parser.h"
 #include "capsim/render.h"
@@ -55,8 +58,18 @@ void BM_Simulate(benchmark::State& state) {
                          benchmark::Counter::kIsRate);
 }
 
+void BM_PlanExchange(benchmark::State& state) {
+  const int side = static_cast<int>(state.range(1));
+  const sim::WindowLayout layout(static_cast<sim::PixelMode>(state.range(0)), sim::CellGrid{side, side}, 512, 512);
+  for (auto _ : state) {
+    const sim::CornerExchange exchange(layout);
+    benchmark::DoNotOptimize(exchange.needs(0).data());
+  }
+}
+
 BENCHMARK(BM_Render)->ArgsProduct({{1, 2}, {0, 2}})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
 BENCHMARK(BM_Simulate)->ArgsProduct({{1, 2}, {0, 2}})->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+BENCHMARK(BM_PlanExchange)->ArgsProduct({{0, 1, 2}, {4, 8, 16}})->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 }  // namespace
 

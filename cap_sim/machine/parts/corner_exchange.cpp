@@ -10,18 +10,30 @@ namespace capsim::sim {
 
 namespace {
 
-// Appends corner c to the message from `from` to `to` in sends[from], unless it
-// was the last corner added there (a corner reaches a relaying cell once, for
-// every cell it relays it to).
-void add(std::vector<std::vector<CornerMessage>>& sends, CellId from, CellId to, CornerIndex c) {
-  std::vector<CornerMessage>& out = sends[from];
-  auto m = std::find_if(out.begin(), out.end(), [to](const CornerMessage& x) { return x.to == to; });
-  if (m == out.end()) {
-    out.push_back({from, to, {}});
-    m = out.end() - 1;
+// The messages each cell sends in one step while they are planned. Corner c
+// goes to the message from `from` to `to` unless it was the last corner added
+// there (a corner reaches a relaying cell once, for every cell it relays it
+// to). A sender's consecutive corners mostly go to the destination of its last
+// one, so that message is tried before the search of its few others.
+class StepPlan {
+ public:
+  explicit StepPlan(std::vector<std::vector<CornerMessage>>& sends) : sends_(sends), last_(sends.size(), 0) {}
+  void add(CellId from, CellId to, CornerIndex c) {
+    std::vector<CornerMessage>& out = sends_[from];
+    std::size_t& k = last_[from];
+    if (k >= out.size() || out[k].to != to) {
+      k = static_cast<std::size_t>(
+          std::find_if(out.begin(), out.end(), [to](const CornerMessage& x) { return x.to == to; }) - out.begin());
+      if (k == out.size()) out.push_back({from, to, {}});
+    }
+    std::vector<CornerIndex>& corners = out[k].corners;
+    if (corners.empty() || corners.back() != c) corners.push_back(c);
   }
-  if (m->corners.empty() || m->corners.back() != c) m->corners.push_back(c);
-}
+
+ private:
+  std::vector<std::vector<CornerMessage>>& sends_;
+  std::vector<std::size_t> last_;
+};
 
 // Each cell's messages in order of destination; counts what each cell receives.
 void finish(std::vector<std::vector<CornerMessage>>& sends, std::vector<int>& receives) {
@@ -146,16 +158,27 @@ CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int firs
   needs_.resize(cells);
   vertical_.resize(cells);
   horizontal_.resize(cells);
+  // Each cell's row and column, looked up rather than divided out per corner.
+  std::vector<int> row_start(static_cast<std::size_t>(cells)), col(row_start.size());
+  for (CellId c = 0; c < cells; ++c) {
+    row_start[c] = grid.id({grid.position(c).row, 0});
+    col[c] = grid.position(c).col;
+  }
   for (std::size_t f = 0; f < frames_.size(); ++f) {
     const WindowLayout& layout = *frames_[f];
     if (layout.width() != width_ || layout.height() != height_ || !(layout.grid() == grid))
       throw std::logic_error("the frames of one exchange need one screen size and cell grid");
-    for_each_need(layout, [&](int x, int y, CellId o, CellId n) {
+    const std::vector<std::uint64_t> needed = corners_needed(layout);
+    for (CellId c = 0; c < cells; ++c) needs_[c].reserve(needs_[c].size() + needed[c]);
+  }
+  StepPlan vertical(vertical_), horizontal(horizontal_);
+  for (std::size_t f = 0; f < frames_.size(); ++f) {
+    for_each_need(*frames_[f], [&](int x, int y, CellId o, CellId n) {
       const CornerIndex c = index(first_frame_ + static_cast<int>(f), x, y);
       needs_[n].push_back(c);
-      const CellId m = grid.id({grid.position(n).row, grid.position(o).col});
-      if (m != o) add(vertical_, o, m, c);
-      if (m != n) add(horizontal_, m, n, c);
+      const CellId m = row_start[n] + col[o];
+      if (m != o) vertical.add(o, m, c);
+      if (m != n) horizontal.add(m, n, c);
     });
   }
   finish(vertical_, vertical_in_);
