@@ -102,6 +102,12 @@ TEST(ParserExtrusion, Refusals) {
   EXPECT_EQ(refusal("linear_extrude(height = 3, twist = 90, slices = 90000) circle(1, $fn = 1000);"),
             "t.csg:1:56: this twisted or unevenly scaled extrusion would have 9.0003e+07 points (90000 slices of "
             "1000), more than the 4000000 capsim tessellates");
+  // Under hull() (or any call that meshes its children) the same count holds
+  // it, before any point is made: 100,000 slices of 1,000 points once ran for
+  // minutes.
+  EXPECT_EQ(refusal("hull() linear_extrude(height = 1, twist = 90, slices = 100000) circle(10, $fn = 100);"),
+            "t.csg:1:8: linear_extrude() under hull() or minkowski() would have 1.00003e+07 points (100000 slices of "
+            "100), more than the 4000000 capsim tessellates");
   EXPECT_EQ(refusal("linear_extrude(1) polygon([[0, 0], [1, 0], [2, 0]]);"),
             "t.csg:1:27: polygon outline crosses itself or encloses no area: capsim extrudes simple outlines only");
   // Paths that cross are clipped (tests/scene/region_2d_test.cpp), not refused.

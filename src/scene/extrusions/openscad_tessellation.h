@@ -8,6 +8,7 @@
 
 #include "capsim/triangle_mesh.h"
 #include "scene/reading/scene_syntax.h"
+#include "scene/work_limits.h"
 
 #include <glm/glm.hpp>
 
@@ -64,7 +65,5 @@ PolygonMesh openscad_cube(const glm::dvec3& size, bool center);
 // when it would have more than kMaxTessellatedPoints points.
 PolygonMesh tessellate_primitive(const Call& call);
 
-inline constexpr int kMaxFragments = 1000000;
-inline constexpr std::size_t kMaxTessellatedPoints = 4000000;
 
 }  // namespace capsim::scene_file

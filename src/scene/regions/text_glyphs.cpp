@@ -1,6 +1,7 @@
 #include "scene/regions/text_glyphs.h"
 
 #include "scene/regions/font_libraries.h"
+#include "scene/work_limits.h"
 
 #include <fmt/core.h>
 #include FT_TRUETYPE_IDS_H
@@ -23,7 +24,6 @@ constexpr double kScale = 1e5;
 constexpr double kUnscale = 1.0 / 1.024e5;
 // OpenSCAD's GRID_FINE: below this radius a circle has 3 fragments.
 constexpr double kGridFine = 0.00000095367431640625;
-constexpr int kMaxFragments = 1000000;
 
 // FreeType, HarfBuzz and fontconfig, opened on the first text(); libraries
 // that cannot be loaded refuse it as any other text() error.
