@@ -8,6 +8,7 @@
 
 #include "capsim/triangle_mesh.h"
 #include "scene/meshes/meshed_solids.h"
+#include "scene/work_limits.h"
 
 #include <glm/glm.hpp>
 
@@ -28,16 +29,13 @@ namespace capsim {
 // without volume around it (two operands that only touch) is dropped. A solid that
 // evaluates to nothing has no pieces. A mesh's closed surfaces meet under
 // the even-odd rule. Preconditions: the meshes are closed (build_closed_mesh)
-// and have at most kMaxDecomposedTriangles triangles together: the Nef
-// polyhedron's exact arithmetic is slow, about 25 s on one core for a
-// surface() of 35 x 35 random heights (some 4,900 triangles), 3 s for one of
-// 15 x 15.
+// and have at most kMaxDecomposedTriangles triangles together (the Nef
+// polyhedron's exact arithmetic is slow; scene/work_limits.h).
 struct ConvexPieces {
   std::optional<std::vector<std::vector<glm::dvec3>>> corners;
   std::string reason;
 };
 ConvexPieces solid_pieces(const scene_file::MeshedSolids& solids, bool split = true);
-inline constexpr std::size_t kMaxDecomposedTriangles = 5000;
 
 // How the refusals of evaluated_corners name what they refuse:
 // "<subject> is not supported: <holder> has N triangles, more than the M

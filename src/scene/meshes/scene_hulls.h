@@ -7,6 +7,7 @@
 
 #include "capsim/scene.h"
 #include "scene/reading/scene_syntax.h"
+#include "scene/work_limits.h"
 
 #include <cstddef>
 #include <string>
@@ -45,9 +46,5 @@ Primitive read_hull(const Call& call, const FileAccess& files);
 // triangles, more than kMaxMinkowskiParts parts, and more than
 // kMaxTessellatedPoints point sums at one child.
 std::vector<Primitive> read_minkowski(const Call& call, const FileAccess& files);
-// Each part is a mesh leaf of its own to hold and trace; the cap keeps one
-// minkowski of two finely split children (their part counts multiply) from
-// taking the scene's primitives and memory.
-inline constexpr std::size_t kMaxMinkowskiParts = 10000;
 
 }  // namespace capsim::scene_file
