@@ -4,7 +4,6 @@
 
 #include "scene/extrusions/scene_extrusion.h"
 #include "scene/extrusions/twisted_extrusion.h"
-#include "scene/work_limits.h"
 
 #include <fmt/format.h>
 
@@ -29,13 +28,7 @@ ExtrudedRegion extruded_region(const Call& call, const RegionSources& sources, s
   }
   ExtrudedRegion out;
   for (const auto& path : region.paths) {
-    // As a twisted extrusion's leaf is held (scene_extrusion.cpp): its points
-    // counted before they are made.
-    const double points = static_cast<double>(path.size()) * (sweep.slices + 3);
-    if (points > static_cast<double>(kMaxTessellatedPoints))
-      throw SceneError(call.loc, fmt::format("linear_extrude() under {} would have {:g} points ({} slices of {}), "
-                                             "more than the {} capsim tessellates",
-                                             under, points, sweep.slices, path.size(), kMaxTessellatedPoints));
+    check_swept_points(path.size(), sweep.slices, call.loc, fmt::format("linear_extrude() under {}", under));
     MeshBuild built = build_closed_mesh(sweep_mesh(path, sweep));
     if (!built.mesh) throw SceneError(call.loc, fmt::format("linear_extrude() under {}: {}", under, built.defect.reason));
     out.meshes.push_back(std::move(*built.mesh));

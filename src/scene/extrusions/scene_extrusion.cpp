@@ -90,11 +90,7 @@ glm::dvec2 number_or_vec2(const Args& args, std::string_view name, glm::dvec2 fa
 
 // A curved extrusion's leaf: OpenSCAD's tessellation of the path swept.
 Primitive swept_prism(const std::vector<glm::dvec2>& path, const Extrusion& e, const Loc& loc) {
-  const double points = static_cast<double>(path.size()) * (e.slices + 3);
-  if (points > static_cast<double>(kMaxTessellatedPoints))
-    throw SceneError(loc, fmt::format("this twisted or unevenly scaled extrusion would have {:g} points ({} slices of "
-                                      "{}), more than the {} capsim tessellates",
-                                      points, e.slices, path.size(), kMaxTessellatedPoints));
+  check_swept_points(path.size(), e.slices, loc, "this twisted or unevenly scaled extrusion");
   const Sweep sweep{e.height, e.twist, e.scale_xy, e.slices, e.collars};
   MeshBuild built = build_closed_mesh(sweep_mesh(path, sweep));
   if (!built.mesh)
@@ -147,6 +143,13 @@ Primitive prism(const std::vector<glm::dvec2>& path, const Extrusion& e, const L
 }
 
 }  // namespace
+
+void check_swept_points(std::size_t path_points, int slices, const Loc& loc, std::string_view what) {
+  const double points = static_cast<double>(path_points) * (slices + 3);
+  if (points > static_cast<double>(kMaxTessellatedPoints))
+    throw SceneError(loc, fmt::format("{} would have {:g} points ({} slices of {}), more than the {} capsim tessellates",
+                                      what, points, slices, path_points, kMaxTessellatedPoints));
+}
 
 void extend_beyond_caps(Extrusion& e) {
   if (e.curved()) {

@@ -46,6 +46,11 @@ struct Extrusion {
 // 2-D booleans; the two agree unless a leaf's points lie outside the shape.
 int extrusion_slices(const std::vector<glm::dvec2>& points, const Extrusion& e);
 
+// Refuses a sweep of `path_points` points in `slices` slices whose points
+// would pass kMaxTessellatedPoints, before any is made; `what` names the
+// extrusion at the head of the message ("this twisted extrusion").
+void check_swept_points(std::size_t path_points, int slices, const Loc& loc, std::string_view what);
+
 // Extends the leaves' span beyond both caps (Extrusion::f0, f1).
 void extend_beyond_caps(Extrusion& e);
 
