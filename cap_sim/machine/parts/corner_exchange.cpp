@@ -164,13 +164,16 @@ CornerExchange::CornerExchange(std::vector<const WindowLayout*> frames, int firs
     row_start[c] = grid.id({grid.position(c).row, 0});
     col[c] = grid.position(c).col;
   }
-  for (std::size_t f = 0; f < frames_.size(); ++f) {
-    const WindowLayout& layout = *frames_[f];
-    if (layout.width() != width_ || layout.height() != height_ || !(layout.grid() == grid))
+  // Each cell's needed corners over all the frames, so that its list is
+  // allocated once.
+  std::vector<std::uint64_t> needed(row_start.size(), 0);
+  for (const WindowLayout* layout : frames_) {
+    if (layout->width() != width_ || layout->height() != height_ || !(layout->grid() == grid))
       throw std::logic_error("the frames of one exchange need one screen size and cell grid");
-    const std::vector<std::uint64_t> needed = corners_needed(layout);
-    for (CellId c = 0; c < cells; ++c) needs_[c].reserve(needs_[c].size() + needed[c]);
+    const std::vector<std::uint64_t> in_frame = corners_needed(*layout);
+    for (CellId c = 0; c < cells; ++c) needed[c] += in_frame[c];
   }
+  for (CellId c = 0; c < cells; ++c) needs_[c].reserve(needed[c]);
   StepPlan vertical(vertical_), horizontal(horizontal_);
   for (std::size_t f = 0; f < frames_.size(); ++f) {
     for_each_need(*frames_[f], [&](int x, int y, CellId o, CellId n) {
