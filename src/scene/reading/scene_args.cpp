@@ -35,25 +35,25 @@ Loc written_at(const Argument& arg) { return arg.name.empty() ? arg.value.loc : 
 }  // namespace
 
 std::string closest_name(std::string_view name, const std::vector<std::string>& candidates) {
-  std::string best;
-  size_t best_distance = 0;
   // A name over twice as long as every candidate is further from each than the
   // limit below allows (the distance is at least the difference in length), so
   // the quadratic distances are skipped: a scene can hold a name of any length.
   size_t longest = 0;
   for (const std::string& c : candidates) longest = std::max(longest, c.size());
-  const bool may_be_misspelt = name.size() <= 2 * longest;
-  for (const std::string& c : candidates) {
-    if (!may_be_misspelt) break;
-    size_t d = edit_distance(name, c);
-    if (best.empty() || d < best_distance) {
-      best = c;
-      best_distance = d;
+  if (name.size() <= 2 * longest) {
+    std::string best;
+    size_t best_distance = 0;
+    for (const std::string& c : candidates) {
+      size_t d = edit_distance(name, c);
+      if (best.empty() || d < best_distance) {
+        best = c;
+        best_distance = d;
+      }
     }
+    // A misspelling changes little relative to the word's length.
+    size_t limit = std::max<size_t>(1, std::min(name.size(), best.size()) / 3);
+    if (best_distance <= limit) return best;
   }
-  // A misspelling changes little relative to the word's length.
-  size_t limit = std::max<size_t>(1, std::min(name.size(), best.size()) / 3);
-  if (may_be_misspelt && best_distance <= limit) return best;
   // A longer or shorter form of an accepted name ("reflection" for "reflect").
   for (const std::string& c : candidates) {
     size_t common = std::min(name.size(), c.size());

@@ -301,7 +301,7 @@ size_t utf8_sequence_length(std::string_view text, size_t i) {
 std::string quoted(std::string_view text) {
   std::string out = "\"";
   size_t i = 0;
-  for (; i < text.size() && i < kQuotedBytes;) {
+  while (i < text.size() && i < kQuotedBytes) {
     const auto c = static_cast<unsigned char>(text[i]);
     if (c >= 0x80) {
       if (size_t n = utf8_sequence_length(text, i)) {
