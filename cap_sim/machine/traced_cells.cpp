@@ -24,6 +24,8 @@ namespace {
 // Per-cell operation counts kept per host thread and added at the end: integer
 // sums, so the totals do not depend on how rows were spread over threads. A
 // cell's cycles come from its summed counts (work_cost), not pixel by pixel.
+// When stealing, each pixel's counts go to its chunk's sum only, and a cell's
+// are its chunks' added up (cell_ops).
 struct Sums {
   std::vector<OpCounts> ops;
   std::vector<std::uint64_t> items;  // pixels or corner samples written
@@ -36,9 +38,15 @@ struct Sums {
     for (std::size_t c = 0; c < ops.size(); ++c)
       chunk_ops[c].resize(chunk_count(layout.window(static_cast<CellId>(c)).pixel_count(), chunk_pixels));
   }
-  void add(const PixelOwner& owner, const OpCounts& pixel_ops, int chunk_pixels) {
-    ops[owner.cell] += pixel_ops;
-    if (chunk_pixels > 0) chunk_ops[owner.cell][owner.video_index / chunk_pixels] += pixel_ops;
+  // The sum a pixel's counts are added to.
+  OpCounts& of(const PixelOwner& owner, int chunk_pixels) {
+    return chunk_pixels > 0 ? chunk_ops[owner.cell][owner.video_index / chunk_pixels] : ops[owner.cell];
+  }
+  OpCounts cell_ops(CellId c) const {
+    if (chunk_ops.empty()) return ops[c];
+    OpCounts total;
+    for (const OpCounts& chunk : chunk_ops[c]) total += chunk;
+    return total;
   }
 };
 
@@ -85,7 +93,7 @@ std::optional<CellOverflow> fold(const tbb::enumerable_thread_specific<Sums>& su
   std::vector<std::uint64_t> items(cell_count, 0);
   for (const Sums& sum : sums)
     for (CellId c = 0; c < cell_count; ++c) {
-      ops[c] += sum.ops[c];
+      ops[c] += sum.cell_ops(c);
       items[c] += sum.items[c];
     }
   std::vector<CostBreakdown> work(cell_count);
@@ -159,12 +167,26 @@ void store(TracedCell& cell, int k, const PixelSample& px, ScreenFormat format, 
     encode_srgb8_row({&px, 1}, out);
 }
 
-// Whether a pixel's operations matter only in its cell's sum, which the
-// tracer may then add them to directly: no float screen keeps the pixel's own
-// cycles, no write cycles are kept, and no stealing chunk sums them apart.
-bool only_cell_sums(ScreenFormat format, bool keep_write_cycles, int chunk_pixels) {
-  return format != ScreenFormat::Float && !keep_write_cycles && chunk_pixels <= 0;
+// Whether a pixel's operations matter only in the sums (its cell's, or its
+// chunk's when stealing), which the tracer may then add them to directly: no
+// float screen keeps the pixel's own cycles and no write cycles are kept.
+bool only_sums(ScreenFormat format, bool keep_write_cycles) {
+  return format != ScreenFormat::Float && !keep_write_cycles;
 }
+
+// A row of corner samples' operation counts, as the tracer hands them on and
+// as a screen traced ahead keeps them: add_to(x, sum) adds corner x's.
+struct CountsRow {
+  std::span<const OpCounts> ops;
+  void add_to(std::size_t x, OpCounts& sum) const { sum += ops[x]; }
+  const OpCounts& at(std::size_t x) const { return ops[x]; }
+};
+struct PackedRow {
+  const PackedOpCounts& ops;
+  std::size_t first;  // the row's first corner
+  void add_to(std::size_t x, OpCounts& sum) const { ops.add_to(first + x, sum); }
+  OpCounts at(std::size_t x) const { return ops.at(first + x); }
+};
 
 // Where trace_cells' samples and operations come from: the tracer, tracing
 // them now, or a screen it traced ahead (ScreenTrace), which holds the same
@@ -173,8 +195,10 @@ struct TracingNow {
   const Tracer& tracer;
   PixelSample pixel(int x, int y, Tracer::Scratch& s, OpCounts& ops) const { return tracer.trace_pixel(x, y, s, ops); }
   const unsigned char* srgb8(int, int) const { return nullptr; }
-  CornerSamples corners(int threads, const CornerCostSink& cost, Progress* progress) const {
-    return trace_corners(tracer, threads, cost, progress);
+  template <class RowCost>
+  CornerSamples corners(int threads, const RowCost& cost, Progress* progress) const {
+    return trace_corners(
+        tracer, threads, [&](int y, std::span<const OpCounts> row) { cost(y, CountsRow{row}); }, progress);
   }
   AntialiasedPixel resolve(int x, int y, const ScreenSample c[4], const AntialiasOptions& aa, Tracer::Scratch& s,
                            OpCounts& ops) const {
@@ -186,21 +210,20 @@ struct TracedAhead {
   const ScreenTrace& screen;
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * screen.width + x; }
   PixelSample pixel(int x, int y, Tracer::Scratch&, OpCounts& ops) const {
-    ops += screen.pixel_ops[at(x, y)];
+    screen.pixel_ops.add_to(at(x, y), ops);
     return screen.pixels[at(x, y)];
   }
   const unsigned char* srgb8(int x, int y) const { return screen.srgb8.data() + at(x, y) * 3; }
   // The corners' costs handed on in row order, on this thread.
-  CornerSamples corners(int, const CornerCostSink& cost, Progress* progress) const {
-    const std::size_t row = static_cast<std::size_t>(screen.width) + 1;
-    for (int y = 0; y <= screen.height; ++y)
-      cost(y, std::span<const OpCounts>(screen.corner_ops).subspan(screen.corners.index(0, y), row));
+  template <class RowCost>
+  CornerSamples corners(int, const RowCost& cost, Progress* progress) const {
+    for (int y = 0; y <= screen.height; ++y) cost(y, PackedRow{screen.corner_ops, screen.corners.index(0, y)});
     if (progress) progress->advance(static_cast<std::uint64_t>(screen.width + 1) * (screen.height + 1));
     return screen.corners;
   }
   AntialiasedPixel resolve(int x, int y, const ScreenSample*, const AntialiasOptions&, Tracer::Scratch&,
                            OpCounts& ops) const {
-    ops += screen.pixel_ops[at(x, y)];
+    screen.pixel_ops.add_to(at(x, y), ops);
     return {screen.pixels[at(x, y)], static_cast<int>(screen.subdivision_samples[at(x, y)])};
   }
 };
@@ -217,7 +240,7 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
   const int cell_count = layout.grid().cell_count();
   const int width = layout.width(), height = layout.height();
   const bool floats = format == ScreenFormat::Float;
-  const bool summed_only = only_cell_sums(format, keep_write_cycles, chunk_pixels);
+  const bool summed_only = only_sums(format, keep_write_cycles);
   std::vector<TracedCell> cells = empty_cells(layout, format, true, keep_write_cycles);
   const OwnerTable owners(layout);
   auto owner = [&](int x, int y) {
@@ -232,13 +255,13 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
   tbb::enumerable_thread_specific<Sums> corner_sums([&] { return Sums(cell_count); });
   const CornerSamples corners = source.corners(
       threads,
-      [&](int y, std::span<const OpCounts> row) {
+      [&](int y, const auto& row) {
         Sums& sum = corner_sums.local();
         for (int x = 0; x <= width; ++x) {
-          const OpCounts& ops = row[static_cast<std::size_t>(x)];
+          const auto at = static_cast<std::size_t>(x);
           if (tracing == CornerTracing::ByOwner) {
             const CellId c = owner(x, y).cell;
-            sum.ops[c] += ops;
+            row.add_to(at, sum.ops[c]);
             ++sum.items[c];
           } else {
             // Corner (x, y) is a corner of pixels (x - 1 .. x, y - 1 .. y):
@@ -252,11 +275,11 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
                 if (std::find(needers, needers + count, c) == needers + count) needers[count++] = c;
               }
             for (int i = 0; i < count; ++i) {
-              sum.ops[needers[i]] += ops;
+              row.add_to(at, sum.ops[needers[i]]);
               ++sum.items[needers[i]];
             }
           }
-          if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = saturated_cycles(ops, costs);
+          if (floats) corner_cycles[static_cast<std::size_t>(y) * (width + 1) + x] = saturated_cycles(row.at(at), costs);
         }
       },
       progress);
@@ -275,15 +298,15 @@ std::vector<TracedCell> trace_cells_antialiased(const Source& source, const Trac
         TracedCell& out = cells[own.cell];
         ++sum.items[own.cell];
         if (summed_only) {
-          // resolve adds its operations to the cell's sum directly.
-          store(out, own.video_index, source.resolve(x, y, c, aa, s, sum.ops[own.cell]).value, format,
+          // resolve adds its operations to the sum directly.
+          store(out, own.video_index, source.resolve(x, y, c, aa, s, sum.of(own, chunk_pixels)).value, format,
                 source.srgb8(x, y));
           continue;
         }
         OpCounts ops;
         const AntialiasedPixel px = source.resolve(x, y, c, aa, s, ops);
         store(out, own.video_index, px.value, format, source.srgb8(x, y));
-        sum.add(own, ops, chunk_pixels);
+        sum.of(own, chunk_pixels) += ops;
         if (!floats && !keep_write_cycles) continue;
         const std::uint64_t subdivision = saturated_cycles(ops, costs);
         if (keep_write_cycles) out.write_cycles[own.video_index] = subdivision;
@@ -333,7 +356,7 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
                                           ScreenFormat format, bool keep_write_cycles, int chunk_pixels) {
   const int cell_count = layout.grid().cell_count();
   const bool floats = format == ScreenFormat::Float;
-  const bool summed_only = only_cell_sums(format, keep_write_cycles, chunk_pixels);
+  const bool summed_only = only_sums(format, keep_write_cycles);
   std::vector<TracedCell> cells = empty_cells(layout, format, false, keep_write_cycles);
   const OwnerTable owners(layout);
   // Pixels are traced in screen order, row by row as `capsim render` traces
@@ -350,8 +373,9 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
         TracedCell& out = cells[owner.cell];
         ++sum.items[owner.cell];
         if (summed_only) {
-          // trace_pixel adds its operations to the cell's sum directly.
-          store(out, owner.video_index, source.pixel(x, y, s, sum.ops[owner.cell]), format, source.srgb8(x, y));
+          // trace_pixel adds its operations to the sum directly.
+          store(out, owner.video_index, source.pixel(x, y, s, sum.of(owner, chunk_pixels)), format,
+                source.srgb8(x, y));
           continue;
         }
         OpCounts ops;
@@ -359,7 +383,7 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
         const std::uint64_t cycles = saturated_cycles(ops, costs);
         if (floats) out.pixel_cycles[owner.video_index] = cycles;
         if (keep_write_cycles) out.write_cycles[owner.video_index] = cycles;
-        sum.add(owner, ops, chunk_pixels);
+        sum.of(owner, chunk_pixels) += ops;
       }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
   });
@@ -408,14 +432,15 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
   t.height = cam.height;
   const std::size_t pixels = static_cast<std::size_t>(cam.width) * cam.height;
   t.pixels.resize(pixels);
-  t.pixel_ops.resize(pixels);
+  t.pixel_ops = PackedOpCounts(pixels);
   if (aa.depth > 0) {
-    t.corner_ops.resize(static_cast<std::size_t>(cam.width + 1) * (cam.height + 1));
+    t.corner_ops = PackedOpCounts(static_cast<std::size_t>(cam.width + 1) * (cam.height + 1));
     t.subdivision_samples.resize(pixels);
     t.corners = trace_corners(
         tracer, threads,
         [&](int y, std::span<const OpCounts> row) {
-          std::copy(row.begin(), row.end(), t.corner_ops.begin() + static_cast<std::ptrdiff_t>(y) * (cam.width + 1));
+          const std::size_t first = static_cast<std::size_t>(y) * (cam.width + 1);
+          for (std::size_t x = 0; x < row.size(); ++x) t.corner_ops.set(first + x, row[x]);
         },
         nullptr);
   }
@@ -425,13 +450,16 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
     for (int y = rows.begin(); y != rows.end(); ++y)
       for (int x = 0; x < cam.width; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * cam.width + x;
+        OpCounts ops;
         if (aa.depth == 0) {
-          t.pixels[i] = tracer.trace_pixel(x, y, s, t.pixel_ops[i]);
+          t.pixels[i] = tracer.trace_pixel(x, y, s, ops);
+          t.pixel_ops.set(i, ops);
           continue;
         }
         const ScreenSample c[4] = {t.corners.at(x, y), t.corners.at(x + 1, y), t.corners.at(x, y + 1),
                                    t.corners.at(x + 1, y + 1)};
-        const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, t.pixel_ops[i]);
+        const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, ops);
+        t.pixel_ops.set(i, ops);
         t.pixels[i] = px.value;
         t.subdivision_samples[i] = static_cast<std::uint32_t>(px.subdivision_samples);
       }

@@ -6,6 +6,7 @@
 // simulated time, when each cell does that work and writes its video memory.
 
 #include "machine/costs/cost_profile.h"
+#include "machine/packed_op_counts.h"
 #include "machine/parts/window_controller.h"
 
 #include "capsim/antialias.h"
@@ -76,18 +77,19 @@ std::vector<TracedCell> trace_cells(const Tracer& tracer, const WindowLayout& la
 // operations), in screen order. Runs that differ only in how the cells share
 // the screen (cells, mode, balance, profile) trace the same pixels: laying out
 // this trace gives each the cells trace_cells gives, to the bit, without
-// tracing again. It holds a sample, 3 bytes of its 8-bit encoding and an OpCounts
-// per pixel (antialiased, also per corner). The tracer must outlive it.
+// tracing again. It holds a sample, 3 bytes of its 8-bit encoding and packed
+// operation counts per pixel (antialiased, also per corner). The tracer must
+// outlive it.
 struct ScreenTrace {
   const Tracer* tracer = nullptr;
   AntialiasOptions aa;
   int width = 0, height = 0;
   std::vector<PixelSample> pixels;
   std::vector<unsigned char> srgb8;  // the pixels as an 8-bit screen stores them, 3 bytes each
-  std::vector<OpCounts> pixel_ops;
+  PackedOpCounts pixel_ops;
   std::vector<std::uint32_t> subdivision_samples;  // antialiased
   CornerSamples corners;                           // antialiased
-  std::vector<OpCounts> corner_ops;                // antialiased, in corners' order
+  PackedOpCounts corner_ops;                       // antialiased, in corners' order
 };
 
 // The tracer's screen (its camera's size) traced with `aa`. threads: 0 = all

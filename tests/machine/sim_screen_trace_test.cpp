@@ -55,17 +55,56 @@ TEST(ScreenTrace, LaidOutOnAnyCellsIsTracingForThem) {
         for (const PixelMode mode : {PixelMode::Block, PixelMode::Line, PixelMode::Dot})
           for (const CellGrid grid : {CellGrid{1, 1}, CellGrid{2, 3}, CellGrid{4, 4}})
             for (const ScreenFormat format : {ScreenFormat::Float, ScreenFormat::Srgb8})
-              for (const CornerTracing corners : {CornerTracing::ByOwner, CornerTracing::ByEveryWindowThatNeedsIt}) {
-                const WindowLayout layout(mode, grid, 21, 13);
-                const std::string what = "seed " + std::to_string(seed) + ", aa " + std::to_string(depth) + ", " +
-                                         to_string(mode) + " " + to_string(grid) + ", threads " +
-                                         std::to_string(threads);
-                expect_same_cells(trace_cells(screen, layout, costs, threads, format, true, corners, 4),
-                                  trace_cells(tracer, layout, costs, threads, nullptr, aa, format, true, corners, 4),
-                                  what);
-              }
+              for (const CornerTracing corners : {CornerTracing::ByOwner, CornerTracing::ByEveryWindowThatNeedsIt})
+                for (const bool keep : {false, true})
+                  for (const int chunk : {0, 4}) {
+                    const WindowLayout layout(mode, grid, 21, 13);
+                    const std::string what = "seed " + std::to_string(seed) + ", aa " + std::to_string(depth) +
+                                             ", " + to_string(mode) + " " + to_string(grid) + ", threads " +
+                                             std::to_string(threads) + ", keep " + std::to_string(keep) +
+                                             ", chunk " + std::to_string(chunk);
+                    expect_same_cells(
+                        trace_cells(screen, layout, costs, threads, format, keep, corners, chunk),
+                        trace_cells(tracer, layout, costs, threads, nullptr, aa, format, keep, corners, chunk), what);
+                  }
       }
     }
+  }
+}
+
+// Stealing's chunks hold a cell's pixel operations between them: cut into
+// chunks or not, a cell has the same operations, rays and work, and its
+// chunks' operations add up to its pixels' (antialiased: its subdivision's),
+// whether the pixels' own cycles are kept or only the sums.
+TEST(ScreenTrace, ChunksAddUpToTheirCells) {
+  const CostTable& costs = load_cost_profile("cap").costs;
+  const PreparedScene scene = random_scene(5, 19, 11);
+  const Tracer tracer(scene, TraceOptions{});
+  for (const int depth : {0, 2}) {
+    const ScreenTrace screen = trace_screen(tracer, AntialiasOptions{depth, 0.3}, 1);
+    for (const PixelMode mode : {PixelMode::Block, PixelMode::Line, PixelMode::Dot})
+      for (const ScreenFormat format : {ScreenFormat::Float, ScreenFormat::Srgb8})
+        for (const bool keep : {false, true}) {
+          const WindowLayout layout(mode, CellGrid{2, 3}, 19, 11);
+          const std::string what = "aa " + std::to_string(depth) + ", " + to_string(mode) + ", keep " +
+                                   std::to_string(keep);
+          const std::vector<TracedCell> whole = trace_cells(screen, layout, costs, 2, format, keep);
+          const std::vector<TracedCell> chunked =
+              trace_cells(screen, layout, costs, 2, format, keep, CornerTracing::ByOwner, 3);
+          for (std::size_t c = 0; c < whole.size(); ++c) {
+            EXPECT_EQ(whole[c].ops, chunked[c].ops) << what << ", cell " << c;
+            EXPECT_EQ(whole[c].rays, chunked[c].rays) << what << ", cell " << c;
+            EXPECT_EQ(whole[c].work.cycles, chunked[c].work.cycles) << what << ", cell " << c;
+            EXPECT_TRUE(whole[c].chunk_ops.empty()) << what << ", cell " << c;
+            OpCounts chunks;
+            for (const OpCounts& k : chunked[c].chunk_ops) chunks += k;
+            EXPECT_NE(chunks, OpCounts()) << what << ", cell " << c;
+            // Antialiased, the corners are traced before the chunks are
+            // handed out: the chunks hold the subdivision.
+            EXPECT_EQ(chunks + chunked[c].corner_ops, chunked[c].ops) << what << ", cell " << c;
+            if (depth > 0) EXPECT_NE(chunked[c].corner_ops, OpCounts()) << what << ", cell " << c;
+          }
+        }
   }
 }
 
