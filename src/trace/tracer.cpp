@@ -321,6 +321,10 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   orthographic_ = c.projection == Projection::Orthographic;
   if (orthographic_) half_height_ *= glm::length(c.center - c.eye);
   half_width_ = half_height_ * static_cast<double>(c.width) / c.height;
+  centre_x_.resize(static_cast<std::size_t>(std::max(c.width, 0)));
+  centre_y_.resize(static_cast<std::size_t>(std::max(c.height, 0)));
+  for (int i = 0; i < c.width; ++i) centre_x_[i] = screen_x(i + 0.5);
+  for (int j = 0; j < c.height; ++j) centre_y_[j] = screen_y(j + 0.5);
   epsilon_ = scene_epsilon(scene);
   crowded_voxels_ = scene.grid.largest_voxel > kCrowdedVoxel;
   spheres_.reserve(scene.prims.size());
@@ -342,10 +346,12 @@ const Tracer::SphereFilter* Tracer::filter(int v) const {
   return it != filters_.end() && it->voxel == v ? &*it : nullptr;
 }
 
-Ray Tracer::screen_ray(double u, double v) const {
-  const Camera& c = scene_.camera;
-  const double px = (2.0 * u / c.width - 1.0) * half_width_;
-  const double py = (1.0 - 2.0 * v / c.height) * half_height_;
+double Tracer::screen_x(double u) const { return (2.0 * u / scene_.camera.width - 1.0) * half_width_; }
+double Tracer::screen_y(double v) const { return (1.0 - 2.0 * v / scene_.camera.height) * half_height_; }
+
+Ray Tracer::screen_ray(double u, double v) const { return ray_through(screen_x(u), screen_y(v)); }
+
+Ray Tracer::ray_through(double px, double py) const {
   Ray r;
   if (orthographic_) {
     r.origin = cam_origin_ + px * cam_right_ + py * cam_up_;
@@ -473,11 +479,15 @@ glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& 
 }
 
 PixelSample Tracer::trace_screen_point(double u, double v, Scratch& scratch, OpCounts& ops) const {
+  return shade_primary(screen_ray(u, v), scratch, ops);
+}
+
+PixelSample Tracer::shade_primary(const Ray& ray, Scratch& scratch, OpCounts& ops) const {
   PixelSample s;
   Hit h;
   h.t = kInfinity;
   ++ops.primary_rays;
-  s.color = shade(screen_ray(u, v), 0, scratch, ops, &h);
+  s.color = shade(ray, 0, scratch, ops, &h);
   if (h.t < kInfinity) {
     s.alpha = 1;
     s.depth = h.t;

@@ -240,4 +240,33 @@ TEST(OpenScadCamera, OptionsOverrideTheSceneCamera) {
   expect_near(ps.lights.at(0).position, expected.eye);
 }
 
+// A pixel's primary ray is the screen ray through its centre, to the bit,
+// in both projections and on screens of odd sizes: the centres' offsets are
+// worked out once, with the same arithmetic. Off the screen too (a pixel
+// outside the camera's size is still a point of its plane).
+TEST(OpenScadCamera, PrimaryRaysAreTheScreenRaysThroughPixelCentres) {
+  for (const Projection projection : {Projection::Perspective, Projection::Orthographic})
+    for (const auto& [width, height] : {std::pair{37, 23}, std::pair{1, 1}, std::pair{64, 48}}) {
+      PrepareOptions o;
+      o.width = width;
+      o.height = height;
+      Scene s = make_scene({sphere({0, 0, 0}, 1)});
+      Camera cam;
+      cam.eye = {0.3, -7.1, 2.2};
+      cam.center = {0.1, 0, -0.4};
+      cam.up = {0, 0, 1};
+      cam.fov_deg = 41.3;
+      cam.projection = projection;
+      s.camera = cam;
+      const PreparedScene ps = prepare_scene(s, o);
+      const Tracer t(ps, {});
+      for (int j = -2; j < height + 2; ++j)
+        for (int i = -2; i < width + 2; ++i) {
+          const Ray a = t.primary_ray(i, j), b = t.screen_ray(i + 0.5, j + 0.5);
+          ASSERT_EQ(a.origin, b.origin) << i << ", " << j;
+          ASSERT_EQ(a.dir, b.dir) << i << ", " << j;
+        }
+    }
+}
+
 }  // namespace
