@@ -1,8 +1,8 @@
 #pragma once
 // The operation counts of many items (a screen's pixels, or its corner
 // samples), 32 bits a count. A screen traced ahead (ScreenTrace) is added into
-// cells once per run laid out on it, and those additions stream every item's
-// counts: held in half the bytes of OpCounts, they stream in half the time.
+// cells once per run laid out on it, and those additions read every item's
+// counts: packed, they are half the bytes of OpCounts to read (and to keep).
 // An item with a count that does not fit 32 bits is kept whole on the side,
 // so every count read back is the one set, to the bit.
 
