@@ -18,6 +18,7 @@
 #include "capsim/tracer.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -37,9 +38,15 @@ inline constexpr int kMaxAntialiasDepth = 8;
 struct ScreenSample {
   float r = 0, g = 0, b = 0;
   std::uint8_t covered = 0;
+  // r, g and b as the 8-bit sRGB codes the threshold compares, encoded once
+  // when the sample is made (a corner is compared by each of the four pixels
+  // around it); on the host only, never sent over the links. of() and from()
+  // set them: make a sample with a colour through them.
+  std::array<std::uint8_t, 3> srgb8{};
   float depth = 0;
   std::int32_t primitive = -1;
 
+  static ScreenSample of(float r, float g, float b, bool covered, float depth, std::int32_t primitive);
   static ScreenSample from(const PixelSample& s);
   bool operator==(const ScreenSample&) const = default;
 };

@@ -82,10 +82,14 @@ class Tracer {
   // the offsets of the pixels' centres worked out once (two divisions fewer
   // a ray).
   Ray primary_ray(int i, int j) const {
-    if (static_cast<unsigned>(i) < centre_x_.size() && static_cast<unsigned>(j) < centre_y_.size())
-      return ray_through(centre_x_[static_cast<unsigned>(i)], centre_y_[static_cast<unsigned>(j)]);
+    if (static_cast<unsigned>(i) < half_x_.size() / 2 && static_cast<unsigned>(j) < half_y_.size() / 2)
+      return ray_through(half_x_[2 * static_cast<unsigned>(i) + 1], half_y_[2 * static_cast<unsigned>(j) + 1]);
     return screen_ray(i + 0.5, j + 0.5);
   }
+  // screen_ray(u, v), to the bit: at the pixels' corners and centres on the
+  // camera's screen (u and v whole or half, as antialiasing's corner samples
+  // and the pixels' centres are) from the same offsets worked out once.
+  Ray screen_point_ray(double u, double v) const;
   Ray screen_ray(double u, double v) const;
   const PreparedScene& scene() const { return scene_; }
   const TraceOptions& options() const { return options_; }
@@ -130,7 +134,9 @@ class Tracer {
   TraceOptions options_;
   glm::dvec3 cam_origin_, cam_forward_, cam_right_, cam_up_;
   double half_height_ = 1, half_width_ = 1;  // orthographic: in scene units, else per unit of depth
-  std::vector<double> centre_x_, centre_y_;  // screen_ray's px and py of each column's and row's centre
+  // screen_ray's px of u = k / 2 and py of v = k / 2, for k = 0 .. 2W and 0 .. 2H:
+  // the offsets of the pixels' corners (k even) and centres (k odd).
+  std::vector<double> half_x_, half_y_;
   bool orthographic_ = false;
   double epsilon_ = 0;  // offset of spawned rays, relative to the universe size
   bool crowded_voxels_ = false;  // the walk must watch for crowded voxels

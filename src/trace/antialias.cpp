@@ -9,33 +9,30 @@
 
 namespace capsim {
 
-ScreenSample ScreenSample::from(const PixelSample& s) {
+ScreenSample ScreenSample::of(float r, float g, float b, bool covered, float depth, std::int32_t primitive) {
+  const Srgb8Encoder& encode = srgb8_encoder();
   ScreenSample out;
-  out.r = static_cast<float>(s.color.x);
-  out.g = static_cast<float>(s.color.y);
-  out.b = static_cast<float>(s.color.z);
-  out.covered = s.alpha > 0 ? 1 : 0;
-  out.depth = static_cast<float>(s.depth);
-  out.primitive = s.primitive;
+  out.r = r;
+  out.g = g;
+  out.b = b;
+  out.covered = covered ? 1 : 0;
+  out.srgb8 = {encode(r), encode(g), encode(b)};
+  out.depth = depth;
+  out.primitive = primitive;
   return out;
+}
+
+ScreenSample ScreenSample::from(const PixelSample& s) {
+  return of(static_cast<float>(s.color.x), static_cast<float>(s.color.y), static_cast<float>(s.color.z),
+            s.alpha > 0, static_cast<float>(s.depth), s.primitive);
 }
 
 namespace {
 
-// A sample's colour as the 8-bit sRGB codes the threshold compares, by the
-// table (linear_to_srgb8 is the same encoding, a call away): a corner
-// difference encodes each of its four corners once, not once per pair.
-struct Codes {
-  int r, g, b;
-};
-
-Codes srgb8_codes(const ScreenSample& s) {
-  static const Srgb8Encoder& encode = srgb8_encoder();
-  return {encode(s.r), encode(s.g), encode(s.b)};
-}
-
-int colour_distance(const Codes& a, const Codes& b) {
-  return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+int colour_distance(const ScreenSample& a, const ScreenSample& b) {
+  int sum = 0;
+  for (int k = 0; k < 3; ++k) sum += std::abs(int{a.srgb8[k]} - int{b.srgb8[k]});
+  return sum;
 }
 
 // A square's mean colour and coverage, in double so that the order of the sums
@@ -94,9 +91,8 @@ class Subdivision {
 
 double corner_difference(const ScreenSample& a, const ScreenSample& b, const ScreenSample& c,
                          const ScreenSample& d) {
-  const Codes ca = srgb8_codes(a), cb = srgb8_codes(b), cc = srgb8_codes(c), cd = srgb8_codes(d);
-  const int largest = std::max({colour_distance(ca, cb), colour_distance(ca, cc), colour_distance(ca, cd),
-                                colour_distance(cb, cc), colour_distance(cb, cd), colour_distance(cc, cd)});
+  const int largest = std::max({colour_distance(a, b), colour_distance(a, c), colour_distance(a, d),
+                                colour_distance(b, c), colour_distance(b, d), colour_distance(c, d)});
   return largest / 255.0;
 }
 

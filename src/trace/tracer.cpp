@@ -321,10 +321,10 @@ Tracer::Tracer(const PreparedScene& scene, TraceOptions options)
   orthographic_ = c.projection == Projection::Orthographic;
   if (orthographic_) half_height_ *= glm::length(c.center - c.eye);
   half_width_ = half_height_ * static_cast<double>(c.width) / c.height;
-  centre_x_.resize(static_cast<std::size_t>(std::max(c.width, 0)));
-  centre_y_.resize(static_cast<std::size_t>(std::max(c.height, 0)));
-  for (int i = 0; i < c.width; ++i) centre_x_[i] = screen_x(i + 0.5);
-  for (int j = 0; j < c.height; ++j) centre_y_[j] = screen_y(j + 0.5);
+  half_x_.resize(2 * static_cast<std::size_t>(std::max(c.width, 0)) + 1);
+  half_y_.resize(2 * static_cast<std::size_t>(std::max(c.height, 0)) + 1);
+  for (std::size_t k = 0; k < half_x_.size(); ++k) half_x_[k] = screen_x(0.5 * static_cast<double>(k));
+  for (std::size_t k = 0; k < half_y_.size(); ++k) half_y_[k] = screen_y(0.5 * static_cast<double>(k));
   epsilon_ = scene_epsilon(scene);
   crowded_voxels_ = scene.grid.largest_voxel > kCrowdedVoxel;
   spheres_.reserve(scene.prims.size());
@@ -350,6 +350,16 @@ double Tracer::screen_x(double u) const { return (2.0 * u / scene_.camera.width 
 double Tracer::screen_y(double v) const { return (1.0 - 2.0 * v / scene_.camera.height) * half_height_; }
 
 Ray Tracer::screen_ray(double u, double v) const { return ray_through(screen_x(u), screen_y(v)); }
+
+Ray Tracer::screen_point_ray(double u, double v) const {
+  // 2u and 2v are exact; a whole one in the tables' range is a table's index.
+  const double ku = 2.0 * u, kv = 2.0 * v;
+  if (ku >= 0 && kv >= 0 && ku < static_cast<double>(half_x_.size()) && kv < static_cast<double>(half_y_.size())) {
+    const auto iu = static_cast<std::size_t>(ku), iv = static_cast<std::size_t>(kv);
+    if (static_cast<double>(iu) == ku && static_cast<double>(iv) == kv) return ray_through(half_x_[iu], half_y_[iv]);
+  }
+  return screen_ray(u, v);
+}
 
 Ray Tracer::ray_through(double px, double py) const {
   Ray r;
@@ -479,7 +489,7 @@ glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& 
 }
 
 PixelSample Tracer::trace_screen_point(double u, double v, Scratch& scratch, OpCounts& ops) const {
-  return shade_primary(screen_ray(u, v), scratch, ops);
+  return shade_primary(screen_point_ray(u, v), scratch, ops);
 }
 
 PixelSample Tracer::shade_primary(const Ray& ray, Scratch& scratch, OpCounts& ops) const {

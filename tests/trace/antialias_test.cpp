@@ -5,6 +5,7 @@
 #include "capsim/antialias.h"
 #include "capsim/parser.h"
 #include "capsim/render.h"
+#include "capsim/srgb.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>
@@ -118,17 +119,37 @@ TEST(Antialias, SamplesPerPixelCountEveryPrimaryRayOnce) {
   }
 }
 
+// A sample's 8-bit codes, encoded once when it is made, are the encoding of
+// its float channels (what corner_difference compared when it encoded each
+// corner anew), whatever the colour: out of range, NaN, at the codes' steps.
+TEST(Antialias, ASamplesCodesAreItsChannelsEncoded) {
+  const double values[] = {-1.0, 0.0, 1e-9, 0.0031308, 0.2, 0.5, 0.99999, 1.0, 7.5, std::nan("")};
+  for (const double r : values)
+    for (const double g : values) {
+      PixelSample p;
+      p.color = {r, g, 1.0 - g};
+      const ScreenSample s = ScreenSample::from(p);
+      EXPECT_TRUE(s.r == static_cast<float>(r) || (std::isnan(r) && std::isnan(s.r))) << r;
+      EXPECT_EQ(s.srgb8[0], linear_to_srgb8(s.r)) << r;
+      EXPECT_EQ(s.srgb8[1], linear_to_srgb8(s.g)) << g;
+      EXPECT_EQ(s.srgb8[2], linear_to_srgb8(s.b)) << 1.0 - g;
+    }
+  // A code step: 0.1f and the float next below it lie on either side of one.
+  const float step = 0.1f, below = std::nextafter(step, 0.0f);
+  const ScreenSample a = ScreenSample::of(step, 0, 0, true, 1, 0), b = ScreenSample::of(below, 0, 0, true, 1, 0);
+  EXPECT_EQ(a.srgb8[0], linear_to_srgb8(step));
+  EXPECT_EQ(b.srgb8[0], linear_to_srgb8(below));
+  EXPECT_EQ(corner_difference(a, a, a, b), std::abs(int{a.srgb8[0]} - int{b.srgb8[0]}) / 255.0);
+}
+
 TEST(Antialias, CornersThatAgreeGiveTheirMeanWithoutExtraSamples) {
   const PreparedScene ps = small_scene(8, 8);
   const Tracer tracer(ps, {});
   Tracer::Scratch s(ps);
   OpCounts ops;
   ScreenSample c[4];
-  for (int k = 0; k < 4; ++k) {
-    c[k].r = 0.1f * k;  // 8-bit sRGB codes 0, 89, 124, 149 ...
-    c[k].g = c[k].b = 0;
-    c[k].covered = k % 2;
-  }
+  // 8-bit sRGB codes 0, 89, 124, 149 ...
+  for (int k = 0; k < 4; ++k) c[k] = ScreenSample::of(0.1f * k, 0, 0, k % 2 == 1, 0, -1);
   // ... differ by up to 149 / 255 = 0.58: below a threshold of 0.6, no split.
   const AntialiasedPixel p = resolve_pixel(tracer, 3, 3, c, {3, 0.6}, s, ops);
   EXPECT_EQ(p.subdivision_samples, 0);

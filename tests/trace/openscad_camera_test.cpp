@@ -240,10 +240,12 @@ TEST(OpenScadCamera, OptionsOverrideTheSceneCamera) {
   expect_near(ps.lights.at(0).position, expected.eye);
 }
 
-// A pixel's primary ray is the screen ray through its centre, to the bit,
-// in both projections and on screens of odd sizes: the centres' offsets are
-// worked out once, with the same arithmetic. Off the screen too (a pixel
-// outside the camera's size is still a point of its plane).
+// A pixel's primary ray is the screen ray through its centre, and a screen
+// point's ray (antialiasing's corner and subdivision samples) the screen ray
+// through it, to the bit, in both projections and on screens of odd sizes:
+// the corners' and centres' offsets are worked out once, with the same
+// arithmetic. Off the screen too (a pixel outside the camera's size is still a
+// point of its plane).
 TEST(OpenScadCamera, PrimaryRaysAreTheScreenRaysThroughPixelCentres) {
   for (const Projection projection : {Projection::Perspective, Projection::Orthographic})
     for (const auto& [width, height] : {std::pair{37, 23}, std::pair{1, 1}, std::pair{64, 48}}) {
@@ -265,6 +267,16 @@ TEST(OpenScadCamera, PrimaryRaysAreTheScreenRaysThroughPixelCentres) {
           const Ray a = t.primary_ray(i, j), b = t.screen_ray(i + 0.5, j + 0.5);
           ASSERT_EQ(a.origin, b.origin) << i << ", " << j;
           ASSERT_EQ(a.dir, b.dir) << i << ", " << j;
+        }
+      // Every quarter-pixel point from two pixels off each side: corners and
+      // centres come from the tables, the others (and those off the screen)
+      // from screen_ray itself; all are its rays.
+      for (int j = -8; j <= 4 * height + 8; ++j)
+        for (int i = -8; i <= 4 * width + 8; ++i) {
+          const double u = 0.25 * i, v = 0.25 * j;
+          const Ray a = t.screen_point_ray(u, v), b = t.screen_ray(u, v);
+          ASSERT_EQ(a.origin, b.origin) << u << ", " << v;
+          ASSERT_EQ(a.dir, b.dir) << u << ", " << v;
         }
     }
 }
