@@ -221,13 +221,8 @@ glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_poin
   glm::dvec3 n{0, 0, 1};
   switch (p.kind) {
     case PrimitiveKind::Sphere:
+      if (p.round_sphere) return round_sphere_normal(round_sphere_slot(p), world_point, ops);
       ++ops.matvec;
-      if (p.round_sphere) {
-        // The same normal as through the matrices, with the same count: the
-        // simulated machine does the general work.
-        ++ops.matvec;
-        return glm::normalize(world_point - p.center);
-      }
       n = transform_point(p.to_object, world_point);
       break;
     case PrimitiveKind::Box: {

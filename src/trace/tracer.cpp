@@ -416,7 +416,10 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
       hit.primitive = c.primitive;
       hit.point = ray.at(c.t);
       hit.entering = s.tree.root_inside();
-      const glm::dvec3 n = world_normal(scene_.prims[c.primitive], hit.point, c.surface, ops);
+      // A round sphere's from its packed slot, the walk's: not its record.
+      const RoundSphereSlot& sphere = spheres_[c.primitive];
+      const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere, hit.point, ops)
+                                          : world_normal(scene_.prims[c.primitive], hit.point, c.surface, ops);
       // The primitive's outward normal, turned to be the solid's: against the
       // ray where the ray enters the solid, along it where it leaves (surfaces
       // that a subtracted primitive contributes face the other way).
