@@ -63,14 +63,14 @@ TEST(SharedLibrary, RefusesASymbolTheLibraryDoesNotHave) {
 }
 
 // The loader lists what it maps at start (LD_TRACE_LOADED_OBJECTS, as ldd
-// does): lib3MF, libxml2 and the font libraries are not among them, nor
-// libzip, libcrypto, ICU and GLib, which only they bring.
+// does): lib3MF, libxml2, the font libraries and MPI's are not among them, nor
+// libzip, libcrypto, ICU, GLib and Open MPI's runtime, which only they bring.
 TEST(SharedLibrary, CapsimStartsWithoutTheLibrariesItOpensOnUse) {
   const TempDir dir;
   const auto r = run_capsim("--version", dir, "export LD_TRACE_LOADED_OBJECTS=1;");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_NE(r.out.find("libc.so.6"), std::string::npos) << r.out;
   for (const char* lib : {"lib3MF", "libzip", "libcrypto", "libxml2", "libicuuc", "libfreetype", "libharfbuzz",
-                          "libfontconfig", "libglib"})
+                          "libfontconfig", "libglib", "libmpi", "libopen-pal", "libhwloc", "libevent"})
     EXPECT_EQ(r.out.find(lib), std::string::npos) << lib << " is loaded at start:\n" << r.out;
 }
