@@ -118,12 +118,12 @@ void leaf_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vecto
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
                         OpCounts& ops);
 
-// world_normal of a round sphere, from its packed slot, to the bit: the same
-// normal as through the matrices, with the same count (the simulated machine
-// does the general work).
-inline glm::dvec3 round_sphere_normal(const RoundSphereSlot& sphere, const glm::dvec3& world_point, OpCounts& ops) {
+// world_normal of a round sphere about `center`, to the bit: the same normal
+// as through the matrices, with the same count (the simulated machine does
+// the general work).
+inline glm::dvec3 round_sphere_normal(const glm::dvec3& center, const glm::dvec3& world_point, OpCounts& ops) {
   ops.matvec += 2;
-  return glm::normalize(world_point - sphere.center);
+  return glm::normalize(world_point - center);
 }
 
 }  // namespace capsim

@@ -221,7 +221,7 @@ glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_poin
   glm::dvec3 n{0, 0, 1};
   switch (p.kind) {
     case PrimitiveKind::Sphere:
-      if (p.round_sphere) return round_sphere_normal(round_sphere_slot(p), world_point, ops);
+      if (p.round_sphere) return round_sphere_normal(p.center, world_point, ops);
       ++ops.matvec;
       n = transform_point(p.to_object, world_point);
       break;

@@ -416,9 +416,10 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
       hit.primitive = c.primitive;
       hit.point = ray.at(c.t);
       hit.entering = s.tree.root_inside();
-      // A round sphere's from its packed slot, the walk's: not its record.
+      // A round sphere's normal comes from the packed slot the walk reads
+      // already, not from the primitive's record.
       const RoundSphereSlot& sphere = spheres_[c.primitive];
-      const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere, hit.point, ops)
+      const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere.center, hit.point, ops)
                                           : world_normal(scene_.prims[c.primitive], hit.point, c.surface, ops);
       // The primitive's outward normal, turned to be the solid's: against the
       // ray where the ray enters the solid, along it where it leaves (surfaces
