@@ -102,7 +102,9 @@ TEST(ScreenTrace, ChunksAddUpToTheirCells) {
             // Antialiased, the corners are traced before the chunks are
             // handed out: the chunks hold the subdivision.
             EXPECT_EQ(chunks + chunked[c].corner_ops, chunked[c].ops) << what << ", cell " << c;
-            if (depth > 0) EXPECT_NE(chunked[c].corner_ops, OpCounts()) << what << ", cell " << c;
+            if (depth > 0) {
+              EXPECT_NE(chunked[c].corner_ops, OpCounts()) << what << ", cell " << c;
+            }
           }
         }
   }

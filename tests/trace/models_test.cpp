@@ -82,7 +82,8 @@ void count_tree(const Scene& scene, const CsgNode& node, ModelCounts& c) {
       case PrimitiveKind::Sphere: ++c.spheres; break;
       case PrimitiveKind::Box: ++c.boxes; break;
       case PrimitiveKind::Cone: ++c.cones; break;
-      case PrimitiveKind::Mesh: ADD_FAILURE() << "the shipped models hold no meshes"; break;
+      case PrimitiveKind::Mesh:
+      case PrimitiveKind::Revolution: ADD_FAILURE() << "the shipped models hold no meshes or revolutions"; break;
     }
     return;
   }
