@@ -282,6 +282,7 @@ TEST(Balance, AntialiasedTilesTraceTheirCornersThemselves) {
       EXPECT_EQ(c.corners_received, 0u) << "no corner crosses the links";
     }
     EXPECT_EQ(corners, expected);
+    EXPECT_GT(subdivision, 0u) << "the antialiasing subdivides some pixel";
     EXPECT_TRUE(r.links.empty());
     expect_conserved(r, "antialiased");
     // A tile's pixels reach the screen as it subdivides them, after its corners.

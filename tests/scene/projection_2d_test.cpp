@@ -69,7 +69,7 @@ TriangleMesh prism(int n, double r, double z0, double z1) {
 }
 
 TEST(Projection, SectionOfABoxIsItsSquare) {
-  MeshedSolids s{{box({0, 0, -1}, {2, 2, 1})}, leaf(0)};
+  MeshedSolids s{{box({0, 0, -1}, {2, 2, 1})}, leaf(0), {}};
   const auto paths = project_solids(s, true);
   ASSERT_EQ(paths.size(), 1u);
   // The corners the grid cut are restored where the sides' lines meet.
@@ -83,14 +83,14 @@ TEST(Projection, SectionOfABoxIsItsSquare) {
 }
 
 TEST(Projection, SectionMissesABoxAboveThePlane) {
-  MeshedSolids s{{box({0, 0, 1}, {2, 2, 3})}, leaf(0)};
+  MeshedSolids s{{box({0, 0, 1}, {2, 2, 3})}, leaf(0), {}};
   EXPECT_TRUE(project_solids(s, true).empty());
   EXPECT_NEAR(area(project_solids(s, false)), 4, 1e-9);
 }
 
 TEST(Projection, ShadowOfAThroughHoleHasAHole) {
   MeshedSolids s{{box({0, 0, 1}, {4, 4, 3}), box({1, 1, 0}, {3, 3, 4})},
-                    op(CsgOp::Difference, {leaf(0), leaf(1)})};
+                    op(CsgOp::Difference, {leaf(0), leaf(1)}), {}};
   const auto paths = project_solids(s, false);
   EXPECT_EQ(paths.size(), 2u);
   EXPECT_NEAR(area(paths), 16 - 4, 1e-9);
@@ -100,22 +100,22 @@ TEST(Projection, ShadowCoversABlindHoleThatTheSectionShows) {
   // The hole goes down from the top to z = 1: the section at z = 0 misses
   // it when the box spans z = -1 .. 3 and the hole reaches z = -0.5.
   MeshedSolids blind{{box({0, 0, -1}, {4, 4, 3}), box({1, 1, 1}, {3, 3, 4})},
-                        op(CsgOp::Difference, {leaf(0), leaf(1)})};
+                        op(CsgOp::Difference, {leaf(0), leaf(1)}), {}};
   EXPECT_EQ(project_solids(blind, false).size(), 1u);
   EXPECT_EQ(project_solids(blind, true).size(), 1u);
   MeshedSolids deep{{box({0, 0, -1}, {4, 4, 3}), box({1, 1, -0.5}, {3, 3, 4})},
-                       op(CsgOp::Difference, {leaf(0), leaf(1)})};
+                       op(CsgOp::Difference, {leaf(0), leaf(1)}), {}};
   EXPECT_NEAR(area(project_solids(deep, false)), 16, 1e-9);
   EXPECT_NEAR(area(project_solids(deep, true)), 12, 1e-9);
 }
 
 TEST(Projection, IntersectionAndUnion) {
   MeshedSolids meet{{box({0, 0, -1}, {2, 2, 1}), box({1, 1, -1}, {3, 3, 1})},
-                       op(CsgOp::Intersection, {leaf(0), leaf(1)})};
+                       op(CsgOp::Intersection, {leaf(0), leaf(1)}), {}};
   EXPECT_NEAR(area(project_solids(meet, true)), 1, 1e-9);
   // Apart in z, the boxes' shadows still meet; their intersection is empty.
   MeshedSolids apart{{box({0, 0, -1}, {2, 2, 1}), box({1, 1, 2}, {3, 3, 4})},
-                        op(CsgOp::Intersection, {leaf(0), leaf(1)})};
+                        op(CsgOp::Intersection, {leaf(0), leaf(1)}), {}};
   EXPECT_TRUE(project_solids(apart, false).empty());
   apart.root.op = CsgOp::Union;
   EXPECT_NEAR(area(project_solids(apart, false)), 7, 1e-9);
@@ -123,7 +123,7 @@ TEST(Projection, IntersectionAndUnion) {
 
 TEST(Projection, ATessellatedCircleKeepsItsCorners) {
   // 96 sides of 0.65 against cells of 0.04: every corner is found again.
-  MeshedSolids s{{prism(96, 10, -1, 1)}, leaf(0)};
+  MeshedSolids s{{prism(96, 10, -1, 1)}, leaf(0), {}};
   const auto paths = project_solids(s, true);
   ASSERT_EQ(paths.size(), 1u);
   EXPECT_EQ(paths[0].size(), 96u);
@@ -134,14 +134,14 @@ TEST(Projection, FeaturesFinerThanTheGridAreLost) {
   // A slot of a thousandth of the width, 1/512 of it being a cell: the
   // documented limit, shown so that a change of the grid is noticed.
   MeshedSolids s{{box({0, 0, -1}, {10, 10, 1}), box({4.9995, -1, -2}, {5.0005, 11, 2})},
-                    op(CsgOp::Difference, {leaf(0), leaf(1)})};
+                    op(CsgOp::Difference, {leaf(0), leaf(1)}), {}};
   EXPECT_EQ(project_solids(s, true).size(), 1u);
   EXPECT_NEAR(area(project_solids(s, true)), 100, 1e-9);
 }
 
 TEST(Projection, SameSolidsSamePaths) {
   MeshedSolids s{{box({0, 0, -1}, {4, 4, 3}), box({1, 1, 0}, {3, 3, 4})},
-                    op(CsgOp::Difference, {leaf(0), leaf(1)})};
+                    op(CsgOp::Difference, {leaf(0), leaf(1)}), {}};
   EXPECT_EQ(project_solids(s, false), project_solids(s, false));
 }
 

@@ -27,7 +27,9 @@ glm::dvec3 factors(std::string_view resize, std::string_view child) {
   const glm::dmat4 m = s.primitives.at(0).to_world * glm::inverse(plain.primitives.at(0).to_world);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r)
-      if (c != r) EXPECT_NEAR(m[c][r], 0, 1e-12) << text;
+      if (c != r) {
+        EXPECT_NEAR(m[c][r], 0, 1e-12) << text;
+      }
   return {m[0][0], m[1][1], m[2][2]};
 }
 
