@@ -21,47 +21,45 @@ bool launched_by_mpi() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::gete
 // The MPI library, opened the first time a launcher has started capsim, not
 // at start-up (include/capsim/shared_library.h): it and the libraries it
 // brings (Open MPI's runtime, hwloc, libevent) cost every run their loading,
-// and only a sweep under mpirun calls them. capsim compiles against mpi.h and
-// calls the library of the same soname (CAPSIM_MPI_SONAME, read by the
-// build). Open MPI's predefined handles are the addresses of objects in its
-// library (MPI_COMM_WORLD is &ompi_mpi_comm_world), so they are found by name
-// too; other MPIs (MPICH) define them as constants.
+// and only a sweep under mpirun calls them. It is the library of the soname
+// the build read (CAPSIM_MPI_SONAME), so the functions are the ones mpi.h
+// declares.
+const SharedLibrary& mpi_library() {
+  static const SharedLibrary library(CAPSIM_MPI_SONAME, "capsim sweep under an MPI launcher");
+  return library;
+}
+
+// The functions and handles the sweep uses, found by name. Open MPI's
+// predefined handles are the addresses of objects in its library
+// (MPI_COMM_WORLD is &ompi_mpi_comm_world), so they are found by name too;
+// other MPIs (MPICH) define them as constants. Making the table opens the
+// library; it throws std::runtime_error when the library cannot be opened,
+// naming it and why.
 struct Mpi {
-  decltype(&MPI_Init_thread) init_thread;
-  decltype(&MPI_Finalize) finalize;
-  decltype(&MPI_Comm_rank) comm_rank;
-  decltype(&MPI_Comm_size) comm_size;
-  decltype(&MPI_Bcast) bcast;
-  decltype(&MPI_Send) send;
-  decltype(&MPI_Recv) recv;
-  MPI_Comm world;
-  MPI_Datatype uint64;
-  MPI_Datatype chars;
+#define CAPSIM_MPI(name) decltype(&::name) name = mpi_library().function<decltype(&::name)>(#name)
+  CAPSIM_MPI(MPI_Init_thread);
+  CAPSIM_MPI(MPI_Finalize);
+  CAPSIM_MPI(MPI_Comm_rank);
+  CAPSIM_MPI(MPI_Comm_size);
+  CAPSIM_MPI(MPI_Bcast);
+  CAPSIM_MPI(MPI_Send);
+  CAPSIM_MPI(MPI_Recv);
+#undef CAPSIM_MPI
+#ifdef OPEN_MPI
+  MPI_Comm world = static_cast<MPI_Comm>(mpi_library().variable<void>("ompi_mpi_comm_world"));
+  MPI_Datatype uint64 = static_cast<MPI_Datatype>(mpi_library().variable<void>("ompi_mpi_uint64_t"));
+  MPI_Datatype chars = static_cast<MPI_Datatype>(mpi_library().variable<void>("ompi_mpi_char"));
+#else
+  MPI_Comm world = MPI_COMM_WORLD;
+  MPI_Datatype uint64 = MPI_UINT64_T;
+  MPI_Datatype chars = MPI_CHAR;
+#endif
 };
 
+// The table, made once for the process.
 const Mpi& mpi() {
-  static const SharedLibrary library(CAPSIM_MPI_SONAME, "capsim sweep under an MPI launcher");
-  static const Mpi m = [] {
-    Mpi f;
-    f.init_thread = library.function<decltype(f.init_thread)>("MPI_Init_thread");
-    f.finalize = library.function<decltype(f.finalize)>("MPI_Finalize");
-    f.comm_rank = library.function<decltype(f.comm_rank)>("MPI_Comm_rank");
-    f.comm_size = library.function<decltype(f.comm_size)>("MPI_Comm_size");
-    f.bcast = library.function<decltype(f.bcast)>("MPI_Bcast");
-    f.send = library.function<decltype(f.send)>("MPI_Send");
-    f.recv = library.function<decltype(f.recv)>("MPI_Recv");
-#ifdef OPEN_MPI
-    f.world = static_cast<MPI_Comm>(library.variable<void>("ompi_mpi_comm_world"));
-    f.uint64 = static_cast<MPI_Datatype>(library.variable<void>("ompi_mpi_uint64_t"));
-    f.chars = static_cast<MPI_Datatype>(library.variable<void>("ompi_mpi_char"));
-#else
-    f.world = MPI_COMM_WORLD;
-    f.uint64 = MPI_UINT64_T;
-    f.chars = MPI_CHAR;
-#endif
-    return f;
-  }();
-  return m;
+  static const Mpi table;
+  return table;
 }
 
 // MPI counts are ints: texts go in pieces of at most 1 GiB.
@@ -75,23 +73,23 @@ SweepRanks::SweepRanks() {
   if (!launched_by_mpi()) return;
   // Only the thread that runs the command calls MPI; TBB's workers never do.
   int provided = 0;
-  mpi().init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
+  mpi().MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
   joined_ = true;
-  mpi().comm_rank(mpi().world, &rank_);
-  mpi().comm_size(mpi().world, &size_);
+  mpi().MPI_Comm_rank(mpi().world, &rank_);
+  mpi().MPI_Comm_size(mpi().world, &size_);
 }
 
 SweepRanks::~SweepRanks() {
-  if (joined_) mpi().finalize();
+  if (joined_) mpi().MPI_Finalize();
 }
 
 std::string SweepRanks::broadcast(const std::string& text) const {
   if (size_ == 1) return text;
   std::uint64_t length = text.size();
-  mpi().bcast(&length, 1, mpi().uint64, 0, mpi().world);
+  mpi().MPI_Bcast(&length, 1, mpi().uint64, 0, mpi().world);
   std::string out = rank_ == 0 ? text : std::string(length, '\0');
   for (std::size_t at = 0; at < length; at += kPiece)
-    mpi().bcast(out.data() + at, piece_size(length, at), mpi().chars, 0, mpi().world);
+    mpi().MPI_Bcast(out.data() + at, piece_size(length, at), mpi().chars, 0, mpi().world);
   return out;
 }
 
@@ -99,18 +97,18 @@ std::vector<std::string> SweepRanks::gather(const std::string& text) const {
   if (size_ == 1) return {text};
   if (rank_ != 0) {
     std::uint64_t length = text.size();
-    mpi().send(&length, 1, mpi().uint64, 0, 0, mpi().world);
+    mpi().MPI_Send(&length, 1, mpi().uint64, 0, 0, mpi().world);
     for (std::size_t at = 0; at < length; at += kPiece)
-      mpi().send(text.data() + at, piece_size(length, at), mpi().chars, 0, 0, mpi().world);
+      mpi().MPI_Send(text.data() + at, piece_size(length, at), mpi().chars, 0, 0, mpi().world);
     return {};
   }
   std::vector<std::string> all = {text};
   for (int from = 1; from < size_; ++from) {
     std::uint64_t length = 0;
-    mpi().recv(&length, 1, mpi().uint64, from, 0, mpi().world, MPI_STATUS_IGNORE);
+    mpi().MPI_Recv(&length, 1, mpi().uint64, from, 0, mpi().world, MPI_STATUS_IGNORE);
     std::string got(length, '\0');
     for (std::size_t at = 0; at < length; at += kPiece)
-      mpi().recv(got.data() + at, piece_size(length, at), mpi().chars, from, 0, mpi().world, MPI_STATUS_IGNORE);
+      mpi().MPI_Recv(got.data() + at, piece_size(length, at), mpi().chars, from, 0, mpi().world, MPI_STATUS_IGNORE);
     all.push_back(std::move(got));
   }
   return all;
