@@ -212,7 +212,11 @@ void for_rows(int height, int threads, MakeState make_state, Row row) {
   });
 }
 
-struct Nothing {};
+// A thread's state for the `hit` contender: its scratch and a row of rays.
+struct HitWorker {
+  capsim::Tracer::Scratch scratch;
+  std::vector<capsim::Ray> rays;
+};
 
 // One child process to completion; wall time and its CPU time (all its
 // threads, user + system). Throws if it fails.
@@ -289,21 +293,27 @@ std::vector<Row> measure_lattice(int n, int resolution, int repeats, const fs::p
   for (const int threads : thread_counts) {
     std::vector<int> sink(resolution);  // results land somewhere so no loop is dropped
     const auto run_embree = [&] {
-      for_rows<Nothing>(resolution, threads, [] { return Nothing{}; }, [&](int j, Nothing&) {
-        int seen = 0;
-        for (int i = 0; i < resolution; ++i) seen += embree.closest(tracer.primary_ray(i, j));
-        sink[j] = seen;
-      });
+      for_rows<std::vector<capsim::Ray>>(
+          resolution, threads, [&] { return std::vector<capsim::Ray>(resolution); },
+          [&](int j, std::vector<capsim::Ray>& rays) {
+            tracer.primary_rays(j, rays);
+            int seen = 0;
+            for (const capsim::Ray& r : rays) seen += embree.closest(r);
+            sink[j] = seen;
+          });
     };
     const auto run_hit = [&] {
-      for_rows<capsim::Tracer::Scratch>(
-          resolution, threads, [&] { return capsim::Tracer::Scratch(prepared); },
-          [&](int j, capsim::Tracer::Scratch& s) {
+      for_rows<HitWorker>(
+          resolution, threads, [&] {
+            return HitWorker{capsim::Tracer::Scratch(prepared), std::vector<capsim::Ray>(resolution)};
+          },
+          [&](int j, HitWorker& w) {
+            tracer.primary_rays(j, w.rays);
             int seen = 0;
-            for (int i = 0; i < resolution; ++i) {
+            for (const capsim::Ray& r : w.rays) {
               capsim::Hit h;
               capsim::OpCounts ops;
-              if (tracer.first_hit(tracer.primary_ray(i, j), s, ops, h)) seen += h.primitive;
+              if (tracer.first_hit(r, w.scratch, ops, h)) seen += h.primitive;
             }
             sink[j] = seen;
           });

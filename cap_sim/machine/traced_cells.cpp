@@ -13,6 +13,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
@@ -447,12 +448,14 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
   tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
   parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
     Tracer::Scratch& s = scratch.local();
-    for (int y = rows.begin(); y != rows.end(); ++y)
+    std::vector<Ray> rays(aa.depth == 0 ? cam.width : 0);  // a row's primary rays, made together
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      if (aa.depth == 0) tracer.primary_rays(y, rays);
       for (int x = 0; x < cam.width; ++x) {
         const std::size_t i = static_cast<std::size_t>(y) * cam.width + x;
         OpCounts ops;
         if (aa.depth == 0) {
-          t.pixels[i] = tracer.trace_pixel(x, y, s, ops);
+          t.pixels[i] = tracer.shade_primary(rays[static_cast<std::size_t>(x)], s, ops);
           t.pixel_ops.set(i, ops);
           continue;
         }
@@ -463,6 +466,7 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
         t.pixels[i] = px.value;
         t.subdivision_samples[i] = static_cast<std::uint32_t>(px.subdivision_samples);
       }
+    }
   });
   t.srgb8.resize(pixels * 3);
   encode_srgb8_row(t.pixels, t.srgb8.data());

@@ -7,6 +7,7 @@
 #include "capsim/prepared_scene.h"
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace capsim {
@@ -77,6 +78,9 @@ class Tracer {
   // The primary ray through screen point (u, v) in pixel units ((0, 0) is the
   // screen's top-left corner, (W, H) its bottom-right), shaded, as trace_pixel.
   PixelSample trace_screen_point(double u, double v, Scratch& scratch, OpCounts& ops) const;
+  // A primary ray shaded: trace_pixel's and trace_screen_point's work after
+  // the ray (for rays made by primary_rays).
+  PixelSample shade_primary(const Ray& ray, Scratch& scratch, OpCounts& ops) const;
 
   // screen_ray(i + 0.5, j + 0.5), to the bit: on the camera's screen, from
   // the offsets of the pixels' centres worked out once (two divisions fewer
@@ -90,6 +94,11 @@ class Tracer {
   // camera's screen (u and v whole or half, as antialiasing's corner samples
   // and the pixels' centres are) from the same offsets worked out once.
   Ray screen_point_ray(double u, double v) const;
+  // The primary rays of row j, rays[i] = primary_ray(i, j) to the bit for i
+  // below rays.size(), made together: one pixel's square root and division do
+  // not wait for the last one's, and the compiler issues them two at a time
+  // (SSE2's packed square root and division round as the scalar ones do).
+  void primary_rays(int j, std::span<Ray> rays) const;
   Ray screen_ray(double u, double v) const;
   const PreparedScene& scene() const { return scene_; }
   const TraceOptions& options() const { return options_; }
@@ -120,8 +129,6 @@ class Tracer {
   bool walk(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
   const SphereFilter* filter(int voxel) const;  // the voxel's, if it has one
   glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, Hit* first) const;
-  // A primary ray shaded (trace_screen_point's work after the ray).
-  PixelSample shade_primary(const Ray& ray, Scratch& scratch, OpCounts& ops) const;
   // The ray through the screen point at offsets (px, py) from the screen's
   // centre, in units of half_width_ and half_height_ (screen_ray's).
   Ray ray_through(double px, double py) const;

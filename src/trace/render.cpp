@@ -32,6 +32,7 @@ namespace {
 struct Worker {
   Tracer::Scratch scratch;
   std::vector<PixelSample> row;
+  std::vector<Ray> rays;  // the row's primary rays, made together
 };
 
 }  // namespace
@@ -83,13 +84,14 @@ void render_rows(const Tracer& tracer, int threads, const RowSink& store, Render
         progress);
   }
   tbb::enumerable_thread_specific<Worker> workers(
-      [&] { return Worker{Tracer::Scratch(tracer.scene()), std::vector<PixelSample>(cam.width)}; });
+      [&] { return Worker{Tracer::Scratch(tracer.scene()), std::vector<PixelSample>(cam.width), std::vector<Ray>(cam.width)}; });
   parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
     Worker& w = workers.local();
     for (int j = rows.begin(); j != rows.end(); ++j) {
       OpCounts& ops = row_ops[j];
       if (aa.depth == 0) {
-        for (int i = 0; i < cam.width; ++i) w.row[i] = tracer.trace_pixel(i, j, w.scratch, ops);
+        tracer.primary_rays(j, w.rays);
+        for (int i = 0; i < cam.width; ++i) w.row[i] = tracer.shade_primary(w.rays[i], w.scratch, ops);
       } else {
         for (int i = 0; i < cam.width; ++i) {
           const ScreenSample c[4] = {corners.at(i, j), corners.at(i + 1, j), corners.at(i, j + 1),

@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 using namespace capsim;
 using namespace capsim::testing;
@@ -240,6 +242,24 @@ TEST(OpenScadCamera, OptionsOverrideTheSceneCamera) {
   expect_near(ps.lights.at(0).position, expected.eye);
 }
 
+// One unit sphere seen by a camera looking from `eye` at `center` (z up) with
+// the given projection, on a width x height screen.
+PreparedScene sphere_seen_from(glm::dvec3 eye, glm::dvec3 center, double fov_deg, Projection projection,
+                               int width, int height) {
+  PrepareOptions o;
+  o.width = width;
+  o.height = height;
+  Scene s = make_scene({sphere({0, 0, 0}, 1)});
+  Camera cam;
+  cam.eye = eye;
+  cam.center = center;
+  cam.up = {0, 0, 1};
+  cam.fov_deg = fov_deg;
+  cam.projection = projection;
+  s.camera = cam;
+  return prepare_scene(s, o);
+}
+
 // A pixel's primary ray is the screen ray through its centre, and a screen
 // point's ray (antialiasing's corner and subdivision samples) the screen ray
 // through it, to the bit, in both projections and on screens of odd sizes:
@@ -249,18 +269,7 @@ TEST(OpenScadCamera, OptionsOverrideTheSceneCamera) {
 TEST(OpenScadCamera, PrimaryRaysAreTheScreenRaysThroughPixelCentres) {
   for (const Projection projection : {Projection::Perspective, Projection::Orthographic})
     for (const auto& [width, height] : {std::pair{37, 23}, std::pair{1, 1}, std::pair{64, 48}}) {
-      PrepareOptions o;
-      o.width = width;
-      o.height = height;
-      Scene s = make_scene({sphere({0, 0, 0}, 1)});
-      Camera cam;
-      cam.eye = {0.3, -7.1, 2.2};
-      cam.center = {0.1, 0, -0.4};
-      cam.up = {0, 0, 1};
-      cam.fov_deg = 41.3;
-      cam.projection = projection;
-      s.camera = cam;
-      const PreparedScene ps = prepare_scene(s, o);
+      const PreparedScene ps = sphere_seen_from({0.3, -7.1, 2.2}, {0.1, 0, -0.4}, 41.3, projection, width, height);
       const Tracer t(ps, {});
       for (int j = -2; j < height + 2; ++j)
         for (int i = -2; i < width + 2; ++i) {
@@ -278,6 +287,31 @@ TEST(OpenScadCamera, PrimaryRaysAreTheScreenRaysThroughPixelCentres) {
           ASSERT_EQ(a.origin, b.origin) << u << ", " << v;
           ASSERT_EQ(a.dir, b.dir) << u << ", " << v;
         }
+    }
+}
+
+// A row's primary rays made together are primary_ray's, to the bit, in both
+// projections: on rows wider than one block of the vectorized loop (64) and
+// not a whole number of blocks, off the screen above and below, and past its
+// right edge (a span longer than the row).
+TEST(OpenScadCamera, RowsOfPrimaryRaysAreThePixelsRays) {
+  for (const Projection projection : {Projection::Perspective, Projection::Orthographic})
+    for (const auto& [width, height] : {std::pair{1, 1}, std::pair{64, 3}, std::pair{197, 5}}) {
+      const PreparedScene ps = sphere_seen_from({-4.3, 6.1, 2.9}, {0.2, -0.1, 0.3}, 33.7, projection, width, height);
+      const Tracer t(ps, {});
+      std::vector<Ray> row(static_cast<std::size_t>(width) + 3);
+      for (int j = -1; j <= height; ++j) {
+        std::fill(row.begin(), row.end(), Ray{glm::dvec3(7), glm::dvec3(7), 7, 7});
+        t.primary_rays(j, row);
+        for (int i = 0; i < static_cast<int>(row.size()); ++i) {
+          const Ray want = t.primary_ray(i, j);
+          const Ray& got = row[static_cast<std::size_t>(i)];
+          ASSERT_EQ(got.origin, want.origin) << i << ", " << j;
+          ASSERT_EQ(got.dir, want.dir) << i << ", " << j;
+          ASSERT_EQ(got.tmin, want.tmin) << i << ", " << j;
+          ASSERT_EQ(got.tmax, want.tmax) << i << ", " << j;
+        }
+      }
     }
 }
 
