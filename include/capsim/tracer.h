@@ -99,6 +99,10 @@ class Tracer {
   // not wait for the last one's, and the compiler issues them two at a time
   // (SSE2's packed square root and division round as the scalar ones do).
   void primary_rays(int j, std::span<Ray> rays) const;
+  // The rays through the pixel corners of corner row y (antialiasing's corner
+  // samples), rays[x] = screen_point_ray(x, y) to the bit, made together as
+  // primary_rays makes a row's.
+  void corner_rays(int y, std::span<Ray> rays) const;
   Ray screen_ray(double u, double v) const;
   const PreparedScene& scene() const { return scene_; }
   const TraceOptions& options() const { return options_; }
@@ -132,6 +136,10 @@ class Tracer {
   // The ray through the screen point at offsets (px, py) from the screen's
   // centre, in units of half_width_ and half_height_ (screen_ray's).
   Ray ray_through(double px, double py) const;
+  // primary_rays (parity 1: the pixels' centres) and corner_rays (parity 0:
+  // their corners): rays[i] through the tables' offsets 2i + parity and
+  // 2 row + parity.
+  void table_rays(unsigned parity, int row, std::span<Ray> rays) const;
   double screen_x(double u) const;  // screen_ray's offsets of screen point (u, v)
   double screen_y(double v) const;
   bool occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,

@@ -53,11 +53,15 @@ CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostS
   parallel_rows(threads, cam.height + 1, [&](const tbb::blocked_range<int>& rows) {
     Tracer::Scratch& s = scratch.local();
     std::vector<OpCounts> row(static_cast<std::size_t>(cam.width) + 1);
+    std::vector<Ray> rays(row.size());  // the row's corner rays, made together
     for (int y = rows.begin(); y != rows.end(); ++y) {
+      tracer.corner_rays(y, rays);
       for (int x = 0; x <= cam.width; ++x) {
         OpCounts& ops = row[static_cast<std::size_t>(x)];
         ops = OpCounts{};
-        corners.samples[corners.index(x, y)] = trace_screen_sample(tracer, x, y, s, ops);
+        // trace_screen_sample(tracer, x, y, s, ops), from the ray made already
+        corners.samples[corners.index(x, y)] =
+            ScreenSample::from(tracer.shade_primary(rays[static_cast<std::size_t>(x)], s, ops));
       }
       cost(y, row);
     }

@@ -361,21 +361,31 @@ Ray Tracer::screen_point_ray(double u, double v) const {
   return screen_ray(u, v);
 }
 
-void Tracer::primary_rays(int j, std::span<Ray> rays) const {
-  const std::size_t columns = std::min(rays.size(), half_x_.size() / 2);
-  if (orthographic_ || static_cast<unsigned>(j) >= half_y_.size() / 2) {
-    for (std::size_t i = 0; i < rays.size(); ++i) rays[i] = primary_ray(static_cast<int>(i), j);
+void Tracer::primary_rays(int j, std::span<Ray> rays) const { table_rays(1, j, rays); }
+
+void Tracer::corner_rays(int y, std::span<Ray> rays) const { table_rays(0, y, rays); }
+
+void Tracer::table_rays(unsigned parity, int row, std::span<Ray> rays) const {
+  // One ray as primary_ray (pixel centres) or screen_point_ray (corners) makes
+  // it; those take the same offsets from the tables wherever the loop below does.
+  const auto single = [&](std::size_t i) {
+    return parity ? primary_ray(static_cast<int>(i), row) : screen_point_ray(static_cast<double>(i), row);
+  };
+  const std::size_t ky = 2 * static_cast<std::size_t>(row) + parity;
+  if (orthographic_ || row < 0 || ky >= half_y_.size()) {
+    for (std::size_t i = 0; i < rays.size(); ++i) rays[i] = single(i);
     return;
   }
+  const std::size_t columns = std::min(rays.size(), (half_x_.size() + 1 - parity) / 2);
   // ray_through's arithmetic in its order, written out per component:
   // glm::normalize(v) is v * (1 / sqrt(dot(v, v))), dot(v, v) is
   // (x * x + y * y) + z * z, and the row's py * cam_up_ is the same for every
-  // pixel. A block's scales first, in a loop of nothing else, which the
+  // ray. A block's scales first, in a loop of nothing else, which the
   // compiler vectorizes; then its rays, their directions worked out again the
   // same way.
-  const glm::dvec3 up = half_y_[2 * static_cast<unsigned>(j) + 1] * cam_up_;
+  const glm::dvec3 up = half_y_[ky] * cam_up_;
   const auto direction = [&](std::size_t i) {
-    const double p = half_x_[2 * i + 1];
+    const double p = half_x_[2 * i + parity];
     return glm::dvec3((cam_forward_.x + p * cam_right_.x) + up.x, (cam_forward_.y + p * cam_right_.y) + up.y,
                       (cam_forward_.z + p * cam_right_.z) + up.z);
   };
@@ -395,7 +405,7 @@ void Tracer::primary_rays(int j, std::span<Ray> rays) const {
       r.tmax = kInfinity;
     }
   }
-  for (std::size_t i = columns; i < rays.size(); ++i) rays[i] = primary_ray(static_cast<int>(i), j);
+  for (std::size_t i = columns; i < rays.size(); ++i) rays[i] = single(i);
 }
 
 Ray Tracer::ray_through(double px, double py) const {

@@ -290,10 +290,11 @@ TEST(OpenScadCamera, PrimaryRaysAreTheScreenRaysThroughPixelCentres) {
     }
 }
 
-// A row's primary rays made together are primary_ray's, to the bit, in both
-// projections: on rows wider than one block of the vectorized loop (64) and
-// not a whole number of blocks, off the screen above and below, and past its
-// right edge (a span longer than the row).
+// A row's primary rays made together are primary_ray's, and a row's corner
+// rays screen_point_ray's, to the bit, in both projections: on rows wider than
+// one block of the vectorized loop (64) and not a whole number of blocks, off
+// the screen above and below, and past its right edge (a span longer than the
+// row).
 TEST(OpenScadCamera, RowsOfPrimaryRaysAreThePixelsRays) {
   for (const Projection projection : {Projection::Perspective, Projection::Orthographic})
     for (const auto& [width, height] : {std::pair{1, 1}, std::pair{64, 3}, std::pair{197, 5}}) {
@@ -310,6 +311,18 @@ TEST(OpenScadCamera, RowsOfPrimaryRaysAreThePixelsRays) {
           ASSERT_EQ(got.dir, want.dir) << i << ", " << j;
           ASSERT_EQ(got.tmin, want.tmin) << i << ", " << j;
           ASSERT_EQ(got.tmax, want.tmax) << i << ", " << j;
+        }
+        // The row of corners above pixel row j, and at j = height the bottom
+        // edge's: screen_point_ray's.
+        std::fill(row.begin(), row.end(), Ray{glm::dvec3(7), glm::dvec3(7), 7, 7});
+        t.corner_rays(j, row);
+        for (int i = 0; i < static_cast<int>(row.size()); ++i) {
+          const Ray want = t.screen_point_ray(i, j);
+          const Ray& got = row[static_cast<std::size_t>(i)];
+          ASSERT_EQ(got.origin, want.origin) << "corner " << i << ", " << j;
+          ASSERT_EQ(got.dir, want.dir) << "corner " << i << ", " << j;
+          ASSERT_EQ(got.tmin, want.tmin) << "corner " << i << ", " << j;
+          ASSERT_EQ(got.tmax, want.tmax) << "corner " << i << ", " << j;
         }
       }
     }
