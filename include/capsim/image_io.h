@@ -13,6 +13,8 @@
 #include "capsim/framebuffer.h"
 #include "capsim/pending_file.h"
 
+#include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -53,6 +55,51 @@ bool is_png_path(const std::string& path);
 void write_png_rgb8(const std::string& path, int width, int height,
                     const std::vector<unsigned char>& rgb);
 void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<unsigned char>& rgb);
+
+// An 8-bit sRGB RGB image held as a PNG's scanlines: per row, the filter-type
+// byte, then 3 bytes per pixel, left to right. Whoever makes a row writes its
+// pixels in place (row) and filters it (filter_row) while it is still in cache,
+// on any thread, for different rows; writing the file then only compresses.
+// This spares write_png_rgb8's copy of the image and its second buffer of
+// image size, and, on several threads, the one-thread filtering pass. The
+// buffer is not zero-filled: each page is first touched by the thread that
+// fills its rows.
+class PngScanlines {
+ public:
+  PngScanlines(int width, int height);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+  // Row j's 3 * width bytes, R, G, B per pixel; written before filter_row(j).
+  unsigned char* row(int j) { return data_.get() + static_cast<std::size_t>(j) * stride() + 1; }
+
+  // Puts row j, once it is whole, under the Sub filter (each byte less the same
+  // channel of the pixel to its left), in place. Once per row.
+  void filter_row(int j);
+
+  // Every row's filter byte and bytes, as the PNG's image data compresses
+  // them. Throws std::logic_error if some row was not filtered.
+  std::span<const unsigned char> filtered() const;
+
+  // The bytes a width x height image takes.
+  static std::uint64_t bytes(int width, int height);
+
+ private:
+  std::size_t stride() const { return 3 * static_cast<std::size_t>(width_) + 1; }
+
+  int width_;
+  int height_;
+  std::unique_ptr<unsigned char[]> data_;
+  std::vector<unsigned char> row_filtered_;  // per row: 1 once filter_row ran
+};
+
+// That image as a PNG file, the file write_png_rgb8 writes of the same pixels,
+// into a pending file the caller commits; throws std::runtime_error.
+void write_png(PendingFile& out, const PngScanlines& image);
+
+// The working memory write_png takes beyond the scanlines: the compressed data.
+std::uint64_t write_png_memory(int width, int height);
 
 // The bytes of that PNG file, in memory (for data URIs). Throws
 // std::logic_error if rgb does not hold width * height * 3 bytes.

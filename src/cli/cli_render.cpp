@@ -34,9 +34,10 @@ Command add_render_command(CLI::App& app) {
       const std::uint64_t corners = aa.depth > 0 ? static_cast<std::uint64_t>(size.width + 1) *
                                                        static_cast<std::uint64_t>(size.height + 1) * sizeof(ScreenSample)
                                                  : 0;
-      return corners + (png ? pixels * 3 + write_png_rgb8_memory(size.width, size.height)
-                            : Framebuffer::bytes(size.width, size.height) + (aa.depth > 0 ? pixels * sizeof(float) : 0) +
-                                  write_image_memory(".exr", size.width, size.height, aa.depth > 0 ? 1 : 0));
+      if (png)
+        return corners + PngScanlines::bytes(size.width, size.height) + write_png_memory(size.width, size.height);
+      return corners + Framebuffer::bytes(size.width, size.height) + (aa.depth > 0 ? pixels * sizeof(float) : 0) +
+             write_image_memory(".exr", size.width, size.height, aa.depth > 0 ? 1 : 0);
     });
     print_cameras(settings, scenes);
     const int width = scenes[0].camera.width, height = scenes[0].camera.height;
@@ -47,15 +48,17 @@ Command add_render_command(CLI::App& app) {
       Progress* rows = frames == 1 ? &progress : nullptr;
       PendingFile& out = outputs[frame_output_option(k, numbered)];
       if (png) {
-        // Colour only, straight to 8 bits: no float framebuffer to fill and convert.
-        std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
+        // Colour only, straight to the PNG's filtered 8-bit rows, each by the
+        // thread that traced it: no float framebuffer to fill and convert.
+        PngScanlines image(width, height);
         render_rows(
             tracer, settings.threads,
             [&](int j, std::span<const PixelSample> row) {
-              encode_srgb8_row(row, rgb.data() + static_cast<std::size_t>(j) * width * 3);
+              encode_srgb8_row(row, image.row(j));
+              image.filter_row(j);
             },
             nullptr, rows, aa);
-        write_png_rgb8(out, width, height, rgb);
+        write_png(out, image);
       } else if (aa.depth == 0) {
         write_image(out, render(tracer, settings.threads, nullptr, rows));
       } else {

@@ -34,31 +34,46 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// The PNG image data: every row under the Sub filter (each byte less the same
-// channel of the pixel to its left), as one zlib stream. libdeflate at its
-// fastest level rather than libpng's own zlib path: zlib's fastest level took
-// about a tenth of a whole primary-only megapixel render, libdeflate needs a
-// fraction of that and writes smaller files. One filter rather than libpng's
-// adaptive choice, which tries all five on every row: within a few percent of
-// the adaptive size on the shipped scenes, at a small part of the cost.
-std::vector<unsigned char> png_image_data(int width, int height, const unsigned char* rgb) {
-  const std::size_t row_bytes = static_cast<std::size_t>(width) * 3;
-  std::vector<unsigned char> filtered((row_bytes + 1) * height);
-  for (int j = 0; j < height; ++j) {
-    const unsigned char* in = rgb + j * row_bytes;
-    unsigned char* out = filtered.data() + j * (row_bytes + 1);
-    *out++ = 1;  // filter type Sub
-    for (std::size_t k = 0; k < row_bytes; ++k)
-      out[k] = static_cast<unsigned char>(in[k] - (k >= 3 ? in[k - 3] : 0));
-  }
-  const std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
-      libdeflate_alloc_compressor(1), libdeflate_free_compressor);
+using Compressor = std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)>;
+
+// libdeflate at its fastest level rather than libpng's own zlib path: zlib's
+// fastest level took about a tenth of a whole primary-only megapixel render,
+// libdeflate needs a fraction of that and writes smaller files.
+Compressor png_compressor() {
+  Compressor compressor(libdeflate_alloc_compressor(1), libdeflate_free_compressor);
   if (!compressor) throw std::bad_alloc();
-  std::vector<unsigned char> data(libdeflate_zlib_compress_bound(compressor.get(), filtered.size()));
-  data.resize(libdeflate_zlib_compress(compressor.get(), filtered.data(), filtered.size(), data.data(),
-                                       data.size()));
-  if (data.empty()) throw std::logic_error("libdeflate: the bound was too small");
+  return compressor;
+}
+
+// The PNG image data, as one zlib stream. The buffer is sized for the worst
+// case but not zero-filled, so only the pages the stream fills are touched.
+struct ImageData {
+  std::unique_ptr<unsigned char[]> bytes;
+  std::size_t size = 0;
+  std::span<const unsigned char> span() const { return {bytes.get(), size}; }
+};
+
+ImageData png_image_data(const PngScanlines& image) {
+  const std::span<const unsigned char> filtered = image.filtered();
+  const Compressor compressor = png_compressor();
+  const std::size_t bound = libdeflate_zlib_compress_bound(compressor.get(), filtered.size());
+  ImageData data{std::make_unique_for_overwrite<unsigned char[]>(bound), 0};
+  data.size = libdeflate_zlib_compress(compressor.get(), filtered.data(), filtered.size(), data.bytes.get(), bound);
+  if (data.size == 0) throw std::logic_error("libdeflate: the bound was too small");
   return data;
+}
+
+// Every row under the Sub filter: one filter rather than libpng's adaptive
+// choice, which tries all five on every row: within a few percent of the
+// adaptive size on the shipped scenes, at a small part of the cost.
+PngScanlines png_scanlines(int width, int height, const unsigned char* rgb) {
+  PngScanlines image(width, height);
+  const std::size_t row_bytes = static_cast<std::size_t>(width) * 3;
+  for (int j = 0; j < height; ++j) {
+    std::memcpy(image.row(j), rgb + j * row_bytes, row_bytes);
+    image.filter_row(j);
+  }
+  return image;
 }
 
 // Where libpng's output goes, and what went wrong: the first write error's
@@ -97,7 +112,7 @@ void png_flush_sink(png_structp png) {
 // and what the callbacks record lives in the caller's frame (an object of this
 // one changed after setjmp would be indeterminate after the jump).
 // Returns the error text or "".
-std::string png_write_chunks(PngSink& sink, int width, int height, const std::vector<unsigned char>& idat) {
+std::string png_write_chunks(PngSink& sink, int width, int height, std::span<const unsigned char> idat) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_keep_error, nullptr);
   if (!png) return "cannot start the PNG encoder";
   png_infop info = png_create_info_struct(png);
@@ -119,13 +134,14 @@ std::string png_write_chunks(PngSink& sink, int width, int height, const std::ve
 }
 
 // Writes to out's temporary file; messages name its target.
-void write_png_file(const PendingFile& out, int width, int height, const unsigned char* rgb) {
+void write_png_file(const PendingFile& out, const PngScanlines& image) {
   const std::string& path = out.target();
-  const std::vector<unsigned char> idat = png_image_data(width, height, rgb);
+  const int width = image.width(), height = image.height();
+  const ImageData idat = png_image_data(image);
   std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
   if (!f) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
   PngSink sink{f, 0, ""};
-  const std::string error = png_write_chunks(sink, width, height, idat);
+  const std::string error = png_write_chunks(sink, width, height, idat.span());
   const bool closed = std::fclose(f) == 0;
   const int close_error = errno;
   if (!error.empty()) throw std::runtime_error(fmt::format("{}: {}", path, error));
@@ -174,12 +190,37 @@ bool is_supported_image_path(const std::string& path) {
 
 bool is_png_path(const std::string& path) { return lower_extension(path) == ".png"; }
 
+PngScanlines::PngScanlines(int width, int height)
+    : width_(width),
+      height_(height),
+      data_(std::make_unique_for_overwrite<unsigned char[]>(static_cast<std::size_t>(bytes(width, height)))),
+      row_filtered_(static_cast<std::size_t>(height), 0) {}
+
+std::uint64_t PngScanlines::bytes(int width, int height) {
+  return (static_cast<std::uint64_t>(width) * 3 + 1) * static_cast<std::uint64_t>(height);
+}
+
+void PngScanlines::filter_row(int j) {
+  unsigned char* p = row(j);
+  p[-1] = 1;  // filter type Sub
+  // From the right, so that each byte's left neighbour is still unfiltered.
+  for (std::size_t k = 3 * static_cast<std::size_t>(width_); k-- > 3;)
+    p[k] = static_cast<unsigned char>(p[k] - p[k - 3]);
+  row_filtered_[static_cast<std::size_t>(j)] = 1;
+}
+
+std::span<const unsigned char> PngScanlines::filtered() const {
+  if (std::find(row_filtered_.begin(), row_filtered_.end(), 0) != row_filtered_.end())
+    throw std::logic_error("PNG scanlines: a row was not filtered");
+  return {data_.get(), static_cast<std::size_t>(bytes(width_, height_))};
+}
+
+std::uint64_t write_png_memory(int width, int height) {
+  return libdeflate_zlib_compress_bound(png_compressor().get(), PngScanlines::bytes(width, height));
+}
+
 std::uint64_t write_png_rgb8_memory(int width, int height) {
-  const std::uint64_t filtered = (static_cast<std::uint64_t>(width) * 3 + 1) * static_cast<std::uint64_t>(height);
-  const std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
-      libdeflate_alloc_compressor(1), libdeflate_free_compressor);
-  if (!compressor) throw std::bad_alloc();
-  return filtered + libdeflate_zlib_compress_bound(compressor.get(), filtered);
+  return PngScanlines::bytes(width, height) + write_png_memory(width, height);
 }
 
 std::uint64_t write_image_memory(const std::string& path, int width, int height, std::size_t extra_channels) {
@@ -192,8 +233,10 @@ void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<u
   if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
     throw std::logic_error(
         fmt::format("{}: {} bytes for a {}x{} RGB image", out.target(), rgb.size(), width, height));
-  write_png_file(out, width, height, rgb.data());
+  write_png_file(out, png_scanlines(width, height, rgb.data()));
 }
+
+void write_png(PendingFile& out, const PngScanlines& image) { write_png_file(out, image); }
 
 void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
   PendingFile out(path);
@@ -239,7 +282,8 @@ std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vec
   std::FILE* f = open_memstream(&data, &size);
   if (!f) throw std::bad_alloc();
   PngSink sink{f, 0, ""};
-  const std::string error = png_write_chunks(sink, width, height, png_image_data(width, height, rgb.data()));
+  const ImageData idat = png_image_data(png_scanlines(width, height, rgb.data()));
+  const std::string error = png_write_chunks(sink, width, height, idat.span());
   std::fclose(f);
   std::vector<unsigned char> png(data, data + size);
   std::free(data);

@@ -44,8 +44,8 @@ INSTANTIATE_TEST_SUITE_P(
         MemoryCase{"RenderExr", "render " + kBalls + " -o OUT.exr --size 16384x16384 --max-memory 11g",
                    "render: a 16384x16384 image needs about 12.0 GiB of image buffers, more than the 11.0 GiB set "
                    "by --max-memory; give a smaller --size or a larger --max-memory"},
-        MemoryCase{"RenderPng", "render " + kBalls + " -o OUT.png --size 16384x16384 --max-memory 2048M",
-                   "render: a 16384x16384 image needs about 2.3 GiB of image buffers, more than the 2.0 GiB set "
+        MemoryCase{"RenderPng", "render " + kBalls + " -o OUT.png --size 16384x16384 --max-memory 1024M",
+                   "render: a 16384x16384 image needs about 1.5 GiB of image buffers, more than the 1.0 GiB set "
                    "by --max-memory; give a smaller --size or a larger --max-memory"}),
     [](const ::testing::TestParamInfo<MemoryCase>& info) { return info.param.name; });
 

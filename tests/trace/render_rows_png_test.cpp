@@ -10,6 +10,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
 #include <vector>
 
 using namespace capsim;
@@ -53,6 +57,54 @@ TEST(ImageIo, PngFromRowsEqualsPngFromAFramebuffer) {
   ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
   for (std::size_t k = 0; k < px.size(); ++k)
     ASSERT_EQ(px[k], linear_to_srgb8(fb.rgba[4 * (k / 3) + k % 3])) << "byte " << k;
+}
+
+// Rows written in place into the PNG's scanlines and filtered one by one, by
+// two threads in no set order (the path `capsim render` takes), give the file
+// write_png_rgb8 writes of the same bytes: at widths where the Sub filter has
+// no left neighbour to subtract (one pixel) and where it wraps both ways.
+TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
+  TempDir dir;
+  for (const auto [w, h] : {std::pair{37, 23}, std::pair{1, 5}, std::pair{64, 1}}) {
+    std::vector<unsigned char> rgb(static_cast<std::size_t>(w) * h * 3);
+    std::uint32_t state = 777u + static_cast<std::uint32_t>(w);
+    for (unsigned char& b : rgb) {
+      state = state * 1664525u + 1013904223u;
+      b = static_cast<unsigned char>(state >> 24);
+    }
+    PngScanlines image(w, h);
+    const std::size_t row_bytes = static_cast<std::size_t>(w) * 3;
+    const auto fill = [&](int parity) {
+      for (int j = h - 1 - parity; j >= 0; j -= 2) {
+        std::memcpy(image.row(j), rgb.data() + static_cast<std::size_t>(j) * row_bytes, row_bytes);
+        image.filter_row(j);
+      }
+    };
+    std::thread other(fill, 1);
+    fill(0);
+    other.join();
+    PendingFile out(dir / "lines.png");
+    write_png(out, image);
+    out.commit();
+    write_png_rgb8(dir / "rgb.png", w, h, rgb);
+    EXPECT_TRUE(read_file(dir / "lines.png") == read_file(dir / "rgb.png")) << w << "x" << h;
+  }
+}
+
+// A row never filtered (its pixels perhaps never written) is refused, and
+// nothing is left behind.
+TEST(ImageIo, PngScanlinesRefuseARowNotFiltered) {
+  TempDir dir;
+  PngScanlines image(4, 3);
+  for (const int j : {0, 2}) {
+    std::memset(image.row(j), 9, 12);
+    image.filter_row(j);
+  }
+  {
+    PendingFile out(dir / "x.png");
+    EXPECT_THROW(write_png(out, image), std::logic_error);
+  }
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
 }
 
 }  // namespace
