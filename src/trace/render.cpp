@@ -30,6 +30,7 @@ void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb) {
 namespace {
 
 struct Worker {
+  Worker(const Tracer& tracer, int width) : scratch(tracer.scene()), row(width), rays(width) {}
   Tracer::Scratch scratch;
   std::vector<PixelSample> row;
   std::vector<Ray> rays;  // the row's primary rays, made together
@@ -87,8 +88,7 @@ void render_rows(const Tracer& tracer, int threads, const RowSink& store, Render
         },
         progress);
   }
-  tbb::enumerable_thread_specific<Worker> workers(
-      [&] { return Worker{Tracer::Scratch(tracer.scene()), std::vector<PixelSample>(cam.width), std::vector<Ray>(cam.width)}; });
+  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(tracer, cam.width); });
   parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
     Worker& w = workers.local();
     for (int j = rows.begin(); j != rows.end(); ++j) {

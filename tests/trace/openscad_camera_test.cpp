@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <vector>
 
 using namespace capsim;
@@ -290,6 +291,22 @@ TEST(OpenScadCamera, PrimaryRaysAreTheScreenRaysThroughPixelCentres) {
     }
 }
 
+// Fills `row` through make(row), after filling it with rays no camera makes,
+// and compares each ray with single(i), the one ray of column i.
+template <typename Make, typename Single>
+void expect_row_of_rays(std::vector<Ray>& row, Make make, Single single, const char* what, int j) {
+  std::fill(row.begin(), row.end(), Ray{glm::dvec3(7), glm::dvec3(7), 7, 7});
+  make(std::span<Ray>(row));
+  for (int i = 0; i < static_cast<int>(row.size()); ++i) {
+    const Ray want = single(i);
+    const Ray& got = row[static_cast<std::size_t>(i)];
+    ASSERT_EQ(got.origin, want.origin) << what << " " << i << ", " << j;
+    ASSERT_EQ(got.dir, want.dir) << what << " " << i << ", " << j;
+    ASSERT_EQ(got.tmin, want.tmin) << what << " " << i << ", " << j;
+    ASSERT_EQ(got.tmax, want.tmax) << what << " " << i << ", " << j;
+  }
+}
+
 // A row's primary rays made together are primary_ray's, and a row's corner
 // rays screen_point_ray's, to the bit, in both projections: on rows wider than
 // one block of the vectorized loop (64) and not a whole number of blocks, off
@@ -302,28 +319,14 @@ TEST(OpenScadCamera, RowsOfPrimaryRaysAreThePixelsRays) {
       const Tracer t(ps, {});
       std::vector<Ray> row(static_cast<std::size_t>(width) + 3);
       for (int j = -1; j <= height; ++j) {
-        std::fill(row.begin(), row.end(), Ray{glm::dvec3(7), glm::dvec3(7), 7, 7});
-        t.primary_rays(j, row);
-        for (int i = 0; i < static_cast<int>(row.size()); ++i) {
-          const Ray want = t.primary_ray(i, j);
-          const Ray& got = row[static_cast<std::size_t>(i)];
-          ASSERT_EQ(got.origin, want.origin) << i << ", " << j;
-          ASSERT_EQ(got.dir, want.dir) << i << ", " << j;
-          ASSERT_EQ(got.tmin, want.tmin) << i << ", " << j;
-          ASSERT_EQ(got.tmax, want.tmax) << i << ", " << j;
-        }
+        ASSERT_NO_FATAL_FAILURE(expect_row_of_rays(
+            row, [&](std::span<Ray> r) { t.primary_rays(j, r); }, [&](int i) { return t.primary_ray(i, j); },
+            "centre", j));
         // The row of corners above pixel row j, and at j = height the bottom
         // edge's: screen_point_ray's.
-        std::fill(row.begin(), row.end(), Ray{glm::dvec3(7), glm::dvec3(7), 7, 7});
-        t.corner_rays(j, row);
-        for (int i = 0; i < static_cast<int>(row.size()); ++i) {
-          const Ray want = t.screen_point_ray(i, j);
-          const Ray& got = row[static_cast<std::size_t>(i)];
-          ASSERT_EQ(got.origin, want.origin) << "corner " << i << ", " << j;
-          ASSERT_EQ(got.dir, want.dir) << "corner " << i << ", " << j;
-          ASSERT_EQ(got.tmin, want.tmin) << "corner " << i << ", " << j;
-          ASSERT_EQ(got.tmax, want.tmax) << "corner " << i << ", " << j;
-        }
+        ASSERT_NO_FATAL_FAILURE(expect_row_of_rays(
+            row, [&](std::span<Ray> r) { t.corner_rays(j, r); }, [&](int i) { return t.screen_point_ray(i, j); },
+            "corner", j));
       }
     }
 }
