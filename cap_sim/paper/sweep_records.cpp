@@ -121,22 +121,19 @@ void add_speedups(std::vector<json>& records) {
 
 std::string sweep_csv(const std::vector<json>& records) {
   std::string out;
-  std::string sep;
-  for (const auto* keys : {&kInputKeys, &kFigureKeys})
-    for (const std::string& key : *keys) {
-      out += sep + key;
-      sep = ",";
-    }
-  out += "\n";
-  for (const json& r : records) {
-    sep.clear();
+  // One line: the value of every input key, then every figure key, by comma.
+  const auto line = [&](const auto& value_of) {
+    bool first = true;
     for (const auto* keys : {&kInputKeys, &kFigureKeys})
       for (const std::string& key : *keys) {
-        out += sep + csv_value(r.at(key));
-        sep = ",";
+        if (!first) out += ',';
+        first = false;
+        out += value_of(key);
       }
-    out += "\n";
-  }
+    out += '\n';
+  };
+  line([](const std::string& key) { return key; });
+  for (const json& r : records) line([&](const std::string& key) { return csv_value(r.at(key)); });
   return out;
 }
 

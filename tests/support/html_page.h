@@ -126,7 +126,10 @@ inline std::vector<std::size_t> descending_order(const std::vector<double>& valu
 }
 inline std::string order_text(const std::vector<std::size_t>& order) {
   std::string text;
-  for (const std::size_t i : order) text += (text.empty() ? "" : " ") + std::to_string(i);
+  for (const std::size_t i : order) {
+    if (!text.empty()) text += ' ';
+    text += std::to_string(i);
+  }
   return text;
 }
 
