@@ -65,7 +65,8 @@ TEST(ImageIo, PngFromRowsEqualsPngFromAFramebuffer) {
 // no left neighbour to subtract (one pixel) and where it wraps both ways.
 TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
   TempDir dir;
-  for (const auto [w, h] : {std::pair{37, 23}, std::pair{1, 5}, std::pair{64, 1}}) {
+  for (const std::pair<int, int>& shape : {std::pair{37, 23}, std::pair{1, 5}, std::pair{64, 1}}) {
+    const int w = shape.first, h = shape.second;  // plain names: lambdas below capture them
     std::vector<unsigned char> rgb(static_cast<std::size_t>(w) * h * 3);
     std::uint32_t state = 777u + static_cast<std::uint32_t>(w);
     for (unsigned char& b : rgb) {
