@@ -61,8 +61,9 @@ TEST(ImageIo, PngFromRowsEqualsPngFromAFramebuffer) {
 
 // Rows written in place into the PNG's scanlines and filtered one by one, by
 // two threads in no set order (the path `capsim render` takes), give the file
-// write_png_rgb8 writes of the same bytes: at widths where the Sub filter has
-// no left neighbour to subtract (one pixel) and where it wraps both ways.
+// write_png_rgb8 writes of the same bytes, and an independent reader finds
+// those bytes in it: at widths where the Sub filter has no left neighbour to
+// subtract (one pixel) and where it wraps both ways.
 TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
   TempDir dir;
   for (const std::pair<int, int>& shape : {std::pair{37, 23}, std::pair{1, 5}, std::pair{64, 1}}) {
@@ -89,6 +90,11 @@ TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
     out.commit();
     write_png_rgb8(dir / "rgb.png", w, h, rgb);
     EXPECT_TRUE(read_file(dir / "lines.png") == read_file(dir / "rgb.png")) << w << "x" << h;
+    auto in = OIIO::ImageInput::open(dir / "lines.png");
+    ASSERT_TRUE(in);
+    std::vector<unsigned char> px(rgb.size());
+    ASSERT_TRUE(in->read_image(0, 0, 0, 3, OIIO::TypeDesc::UINT8, px.data()));
+    EXPECT_TRUE(px == rgb) << w << "x" << h;
   }
 }
 
