@@ -60,4 +60,14 @@ inline Scene make_scene(std::vector<Primitive> prims, std::optional<CsgNode> roo
   return s;
 }
 
+// A grid of n x n x n unit voxels over [0, n]^3, for walking by hand.
+inline VoxelGrid unit_voxel_grid(int n) {
+  VoxelGrid g;
+  g.universe = {glm::dvec3(0), glm::dvec3(n)};
+  g.n = n;
+  g.voxel_size = glm::dvec3(1);
+  g.inv_voxel_size = glm::dvec3(1);
+  return g;
+}
+
 }  // namespace capsim::testing

@@ -115,11 +115,7 @@ TEST(PrimitiveGeometry, ConeSideAndCaps) {
 }
 
 TEST(Dda3, AxisParallelRayVisitsARowOfVoxels) {
-  VoxelGrid g;
-  g.universe = {glm::dvec3(0), glm::dvec3(4)};
-  g.n = 4;
-  g.voxel_size = glm::dvec3(1);
-  g.inv_voxel_size = glm::dvec3(1);
+  const VoxelGrid g = unit_voxel_grid(4);
   Dda3 dda;
   ASSERT_TRUE(dda.setup(g, ray({-1, 1.5, 2.5}, {1, 0, 0})));
   std::vector<int> xs = {dda.vx()};
@@ -134,11 +130,7 @@ TEST(Dda3, AxisParallelRayVisitsARowOfVoxels) {
 }
 
 TEST(Dda3, DiagonalRayStepsOneAxisAtATime) {
-  VoxelGrid g;
-  g.universe = {glm::dvec3(0), glm::dvec3(8)};
-  g.n = 8;
-  g.voxel_size = glm::dvec3(1);
-  g.inv_voxel_size = glm::dvec3(1);
+  const VoxelGrid g = unit_voxel_grid(8);
   Dda3 dda;
   ASSERT_TRUE(dda.setup(g, ray({0.5, 0.25, 0.1}, glm::normalize(glm::dvec3(1, 0.7, 0.3)))));
   int steps = 0;
@@ -178,11 +170,7 @@ TEST(Dda3, VoxelIndexIsDefinedForEveryDouble) {
 // NaN for a ray starting on a voxel plane, and then no crossing was ever
 // inside the voxel: the ray missed what it hit.
 TEST(Dda3, SubnormalDirectionComponentIsWalkedAsZero) {
-  VoxelGrid g;
-  g.universe = {glm::dvec3(0), glm::dvec3(4)};
-  g.n = 4;
-  g.voxel_size = glm::dvec3(1);
-  g.inv_voxel_size = glm::dvec3(1);
+  const VoxelGrid g = unit_voxel_grid(4);
   Dda3 dda;
   ASSERT_TRUE(dda.setup(g, ray({3, -1, 2.5}, {-1e-310, 1, 0})));
   EXPECT_DOUBLE_EQ(dda.t_in(), 1);
