@@ -445,10 +445,14 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
         },
         nullptr);
   }
-  tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
+  // Antialiased pixels trace from the corners; only unantialiased rows are
+  // made as rows of rays.
+  tbb::enumerable_thread_specific<RowWorkspace> workspaces(
+      [&] { return RowWorkspace(tracer, aa.depth == 0 ? cam.width : 0); });
   parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
-    Tracer::Scratch& s = scratch.local();
-    std::vector<Ray> rays(aa.depth == 0 ? cam.width : 0);  // a row's primary rays, made together
+    RowWorkspace& w = workspaces.local();
+    Tracer::Scratch& s = w.scratch;
+    const std::span<Ray> rays = w.rays;
     for (int y = rows.begin(); y != rows.end(); ++y) {
       if (aa.depth == 0) tracer.primary_rays(y, rays);
       for (int x = 0; x < cam.width; ++x) {

@@ -21,6 +21,15 @@ void set_pixel(Framebuffer& fb, int i, int j, const PixelSample& s);
 // output encodes them; rgb holds 3 * row.size() bytes.
 void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb);
 
+// What a host thread keeps from one row to the next while tracing rows: the
+// tracer's scratch and room for a row of rays, made together
+// (Tracer::primary_rays, Tracer::corner_rays).
+struct RowWorkspace {
+  RowWorkspace(const Tracer& tracer, int rays) : scratch(tracer.scene()), rays(static_cast<std::size_t>(rays)) {}
+  Tracer::Scratch scratch;
+  std::vector<Ray> rays;
+};
+
 struct RenderStats {
   OpCounts ops;  // summed over every pixel
 };

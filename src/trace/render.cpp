@@ -29,11 +29,16 @@ void encode_srgb8_row(std::span<const PixelSample> row, unsigned char* rgb) {
 
 namespace {
 
-struct Worker {
-  Worker(const Tracer& tracer, int width) : scratch(tracer.scene()), row(width), rays(width) {}
-  Tracer::Scratch scratch;
+// A row's samples, beside the rays they are traced from.
+struct PixelRowWorkspace : RowWorkspace {
+  PixelRowWorkspace(const Tracer& tracer, int width) : RowWorkspace(tracer, width), row(width) {}
   std::vector<PixelSample> row;
-  std::vector<Ray> rays;  // the row's primary rays, made together
+};
+
+// A row of corners' costs, beside their rays.
+struct CornerRowWorkspace : RowWorkspace {
+  CornerRowWorkspace(const Tracer& tracer, int corners) : RowWorkspace(tracer, corners), row(corners) {}
+  std::vector<OpCounts> row;
 };
 
 }  // namespace
@@ -50,21 +55,20 @@ CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostS
   corners.width = cam.width;
   corners.height = cam.height;
   corners.samples.resize(static_cast<std::size_t>(cam.width + 1) * (cam.height + 1));
-  tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
+  tbb::enumerable_thread_specific<CornerRowWorkspace> workspaces(
+      [&] { return CornerRowWorkspace(tracer, cam.width + 1); });
   parallel_rows(threads, cam.height + 1, [&](const tbb::blocked_range<int>& rows) {
-    Tracer::Scratch& s = scratch.local();
-    std::vector<OpCounts> row(static_cast<std::size_t>(cam.width) + 1);
-    std::vector<Ray> rays(row.size());  // the row's corner rays, made together
+    CornerRowWorkspace& w = workspaces.local();
     for (int y = rows.begin(); y != rows.end(); ++y) {
-      tracer.corner_rays(y, rays);
+      tracer.corner_rays(y, w.rays);
       for (int x = 0; x <= cam.width; ++x) {
-        OpCounts& ops = row[static_cast<std::size_t>(x)];
+        OpCounts& ops = w.row[static_cast<std::size_t>(x)];
         ops = OpCounts{};
-        // trace_screen_sample(tracer, x, y, s, ops), from the ray made already
+        // trace_screen_sample(tracer, x, y, scratch, ops), from the ray made already
         corners.samples[corners.index(x, y)] =
-            ScreenSample::from(tracer.shade_primary(rays[static_cast<std::size_t>(x)], s, ops));
+            ScreenSample::from(tracer.shade_primary(w.rays[static_cast<std::size_t>(x)], w.scratch, ops));
       }
-      cost(y, row);
+      cost(y, w.row);
     }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * (cam.width + 1));
   });
@@ -88,9 +92,10 @@ void render_rows(const Tracer& tracer, int threads, const RowSink& store, Render
         },
         progress);
   }
-  tbb::enumerable_thread_specific<Worker> workers([&] { return Worker(tracer, cam.width); });
+  tbb::enumerable_thread_specific<PixelRowWorkspace> workspaces(
+      [&] { return PixelRowWorkspace(tracer, cam.width); });
   parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
-    Worker& w = workers.local();
+    PixelRowWorkspace& w = workspaces.local();
     for (int j = rows.begin(); j != rows.end(); ++j) {
       OpCounts& ops = row_ops[j];
       if (aa.depth == 0) {
