@@ -26,8 +26,10 @@ bool later(const Crossing& a, const Crossing& b) {
 // Pending crossings are few (those of the primitives met so far that lie
 // beyond the current voxel), so a vector kept sorted latest-first, with the
 // nearest at the back, beats a heap; a new crossing enters by insertion from
-// the back, after any equal ones.
-void insert_sorted(std::vector<Crossing>& pending, const Crossing& c) {
+// the back, after any equal ones. Always inline: the crossing was built a
+// moment before, field by field, and a call passes it through memory, where
+// the copy's wide loads wait for all of those stores to be done.
+[[gnu::always_inline]] inline void insert_sorted(std::vector<Crossing>& pending, const Crossing& c) {
   pending.push_back(c);
   std::size_t k = pending.size() - 1;
   for (; k > 0 && later(c, pending[k - 1]); --k) pending[k] = pending[k - 1];
@@ -75,21 +77,29 @@ void meet_many_intervals(std::uint32_t p, const PreparedPrimitive& prim, const R
 
 // A convex primitive's span along the ray: one the ray starts in toggles
 // its leaf at once, every crossing ahead goes to `add`.
+//
+// The exit goes first. The pending crossings' order is the one `later`
+// sets whatever order they come in, and an entry added after its exit
+// usually belongs at the back, where the nearest crossing is. Added the
+// other way, the exit had to move the entry up a place, just after the
+// entry's stores, which the moving loads must wait for.
 template <typename AddCrossing>
 void take_span(std::uint32_t p, const LineSpan& span, const Ray& ray, Tracer::Scratch& s, OpCounts& ops,
                AddCrossing add) {
   if (span.t_exit <= ray.tmin || span.t_enter >= ray.tmax) return;
-  if (span.t_enter <= ray.tmin) {
+  const bool starts_inside = span.t_enter <= ray.tmin;
+  if (starts_inside) {
     // The ray starts inside this primitive: its leaf is inside from the
     // start. Every such primitive holds the start point, so it is met in the
     // first voxel, before any crossing is evaluated.
     s.tree.toggle(p, ops);
-  } else {
-    add(Crossing{span.t_enter, p, span.enter_surface, true});
-    ++ops.hits_sorted;
   }
   if (span.t_exit < ray.tmax) {
     add(Crossing{span.t_exit, p, span.exit_surface, false});
+    ++ops.hits_sorted;
+  }
+  if (!starts_inside) {
+    add(Crossing{span.t_enter, p, span.enter_surface, true});
     ++ops.hits_sorted;
   }
 }
@@ -456,18 +466,23 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
     // for their voxel, where primitives not yet met may come before them.
     const double t_out = dda.t_out();
     while (!s.pending.empty() && s.pending.back().t <= t_out) {
-      const Crossing c = s.pending.back();
+      // Only the fields used, read one by one: the crossing may have been
+      // written a moment ago, field by field, and a load spanning fields
+      // would wait for all of its stores.
+      const double t = s.pending.back().t;
+      const std::uint32_t primitive = s.pending.back().primitive;
+      const SurfaceId surface = s.pending.back().surface;
       s.pending.pop_back();
-      if (!s.tree.toggle(c.primitive, ops)) continue;
-      hit.t = c.t;
-      hit.primitive = c.primitive;
-      hit.point = ray.at(c.t);
+      if (!s.tree.toggle(primitive, ops)) continue;
+      hit.t = t;
+      hit.primitive = primitive;
+      hit.point = ray.at(t);
       hit.entering = s.tree.root_inside();
       // A round sphere's normal comes from the packed slot the walk reads
       // already, not from the primitive's record.
-      const RoundSphereSlot& sphere = spheres_[c.primitive];
+      const RoundSphereSlot& sphere = spheres_[primitive];
       const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere.center, hit.point, ops)
-                                          : world_normal(scene_.prims[c.primitive], hit.point, c.surface, ops);
+                                          : world_normal(scene_.prims[primitive], hit.point, surface, ops);
       // The primitive's outward normal, turned to be the solid's: against the
       // ray where the ray enters the solid, along it where it leaves (surfaces
       // that a subtracted primitive contributes face the other way).
