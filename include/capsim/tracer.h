@@ -132,7 +132,9 @@ class Tracer {
   template <bool kMayBeCrowded>
   bool walk(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
   const SphereFilter* filter(int voxel) const;  // the voxel's, if it has one
-  glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, Hit* first) const;
+  // The colour seen along the ray; primary, if given, also receives the
+  // coverage, distance and primitive of what the ray meets (a miss leaves it).
+  glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, PixelSample* primary) const;
   // The ray through the screen point at offsets (px, py) from the screen's
   // centre, in units of half_width_ and half_height_ (screen_ray's).
   Ray ray_through(double px, double py) const;

@@ -507,11 +507,15 @@ bool Tracer::occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scr
 }
 
 glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops,
-                         Hit* first) const {
+                         PixelSample* primary) const {
   ++ops.rays;
   Hit h;
   if (!first_hit(ray, scratch, ops, h)) return scene_.scene.background;
-  if (first) *first = h;
+  if (primary) {
+    primary->alpha = 1;
+    primary->depth = h.t;
+    primary->primitive = static_cast<int>(h.primitive);
+  }
 
   const Primitive& prim = scene_.scene.primitives[h.primitive];
   const Material& m = prim.material;
@@ -560,15 +564,8 @@ PixelSample Tracer::trace_screen_point(double u, double v, Scratch& scratch, OpC
 
 PixelSample Tracer::shade_primary(const Ray& ray, Scratch& scratch, OpCounts& ops) const {
   PixelSample s;
-  Hit h;
-  h.t = kInfinity;
   ++ops.primary_rays;
-  s.color = shade(ray, 0, scratch, ops, &h);
-  if (h.t < kInfinity) {
-    s.alpha = 1;
-    s.depth = h.t;
-    s.primitive = static_cast<int>(h.primitive);
-  }
+  s.color = shade(ray, 0, scratch, ops, &s);
   return s;
 }
 
