@@ -56,7 +56,14 @@ bool Dda3::setup(const VoxelGrid& grid, const Ray& ray) {
   n_ = grid.n;
   t_in_ = t0;
   t_end_ = t1;
-  const glm::dvec3 entry = ray.origin + t0 * glm::dvec3(x.dir, y.dir, z.dir);
+  // A ray that starts inside the universe (a shadow ray, a reflection) keeps
+  // t0 = tmin, bit for bit (a clip only ever raises t0 strictly). Its entry
+  // point is then worked out from tmin, which does not wait for the clip's
+  // divisions; the test is a branch the predictor learns, so the first
+  // voxel's index need not wait either.
+  const glm::dvec3 dir(x.dir, y.dir, z.dir);
+  glm::dvec3 entry = ray.origin + ray.tmin * dir;
+  if (t0 != ray.tmin) entry = ray.origin + t0 * dir;
   start_axis(entry.x, x.origin, x.dir, x.inv, u.lo.x, grid.voxel_size.x, grid.inv_voxel_size.x, vx_,
              incre_x_, tx_, dtx_);
   start_axis(entry.y, y.origin, y.dir, y.inv, u.lo.y, grid.voxel_size.y, grid.inv_voxel_size.y, vy_,
