@@ -48,9 +48,13 @@ std::array<float, 256> srgb8_thresholds() {
 
 Srgb8Encoder::Srgb8Encoder() {
   const std::array<float, 256> t = srgb8_thresholds();
+  // The buckets' first values rise with b, and so does their code: the
+  // greatest code whose threshold is at most the first value, found by
+  // moving on from the last bucket's rather than by a search per bucket.
+  int code = 0;
   for (std::uint32_t b = 0; b < kBuckets; ++b) {
     const float first = float_of(b << 16), last = float_of((b << 16) | 0xffffu);
-    const auto code = static_cast<int>(std::upper_bound(t.begin() + 1, t.end(), first) - t.begin() - 1);
+    while (code < 255 && t[code + 1] <= first) ++code;
     code_[b] = static_cast<unsigned char>(code);
     next_[b] = code < 255 ? t[code + 1] : std::numeric_limits<float>::infinity();
     if (code < 254 && last >= t[code + 2])
