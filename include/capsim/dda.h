@@ -13,7 +13,9 @@ class Dda3 {
   // Set-up: clips the ray to the universe and finds the first voxel, the
   // increments and the t of the next x, y, z plane crossings. A zero direction
   // component never crosses its planes (t = +inf). Returns false if the ray's
-  // [tmin, tmax] misses the universe.
+  // [tmin, tmax] misses the universe. A ray that moves along no axis (every
+  // component zero, subnormal or NaN) is not clipped: it stays in the voxel
+  // of its origin, if the universe holds that, whatever its [tmin, tmax].
   bool setup(const VoxelGrid& grid, const Ray& ray);
 
   // The current voxel and the t range [t_in(), t_out()] the ray spends in it.
