@@ -95,7 +95,7 @@ class PlainDda {
   double t_in_ = 0, t_end_ = 0;
 };
 
-// The voxels a walk visits (at most `limit`), or nothing if its set-up fails.
+// The voxels a walk visits (at most 64), or nothing if its set-up fails.
 template <class Walk, class VisitOf>
 std::optional<std::vector<Visit>> walk(Walk& w, const VoxelGrid& g, const Ray& r, VisitOf visit_of) {
   if (!w.setup(g, r)) return std::nullopt;
