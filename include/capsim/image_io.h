@@ -95,8 +95,10 @@ class PngScanlines {
 };
 
 // That image as a PNG file, the file write_png_rgb8 writes of the same pixels,
-// into a pending file the caller commits; throws std::runtime_error.
-void write_png(PendingFile& out, const PngScanlines& image);
+// into a pending file the caller commits; throws std::runtime_error. The image
+// data is compressed on `threads` host threads (0 = all); the file's bytes do
+// not depend on them.
+void write_png(PendingFile& out, const PngScanlines& image, int threads = 1);
 
 // The working memory write_png takes beyond the scanlines: the compressed data.
 std::uint64_t write_png_memory(int width, int height);

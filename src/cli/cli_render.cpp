@@ -58,7 +58,7 @@ Command add_render_command(CLI::App& app) {
               image.filter_row(j);
             },
             nullptr, rows, aa);
-        write_png(out, image);
+        write_png(out, image, settings.threads);
       } else if (aa.depth == 0) {
         write_image(out, render(tracer, settings.threads, nullptr, rows));
       } else {

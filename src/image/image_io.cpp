@@ -1,13 +1,13 @@
 #include "capsim/image_io.h"
 
 #include "capsim/srgb.h"
+#include "image/zlib_bands.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <fmt/core.h>
-#include <libdeflate.h>
 #include <png.h>
 
 #include <algorithm>
@@ -32,35 +32,6 @@ std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   return ext;
-}
-
-using Compressor = std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)>;
-
-// libdeflate at its fastest level rather than libpng's own zlib path: zlib's
-// fastest level took about a tenth of a whole primary-only megapixel render,
-// libdeflate needs a fraction of that and writes smaller files.
-Compressor png_compressor() {
-  Compressor compressor(libdeflate_alloc_compressor(1), libdeflate_free_compressor);
-  if (!compressor) throw std::bad_alloc();
-  return compressor;
-}
-
-// The PNG image data, as one zlib stream. The buffer is sized for the worst
-// case but not zero-filled, so only the pages the stream fills are touched.
-struct ImageData {
-  std::unique_ptr<unsigned char[]> bytes;
-  std::size_t size = 0;
-  std::span<const unsigned char> span() const { return {bytes.get(), size}; }
-};
-
-ImageData png_image_data(const PngScanlines& image) {
-  const std::span<const unsigned char> filtered = image.filtered();
-  const Compressor compressor = png_compressor();
-  const std::size_t bound = libdeflate_zlib_compress_bound(compressor.get(), filtered.size());
-  ImageData data{std::make_unique_for_overwrite<unsigned char[]>(bound), 0};
-  data.size = libdeflate_zlib_compress(compressor.get(), filtered.data(), filtered.size(), data.bytes.get(), bound);
-  if (data.size == 0) throw std::logic_error("libdeflate: the bound was too small");
-  return data;
 }
 
 // Every row under the Sub filter: one filter rather than libpng's adaptive
@@ -107,7 +78,7 @@ void png_flush_sink(png_structp png) {
 }
 
 // libpng writes the signature, the header and colour chunks, and the CRCs; the
-// image data comes ready from png_image_data. libpng reports errors by longjmp;
+// image data comes ready from zlib_compress_in_bands. libpng reports errors by longjmp;
 // this frame holds nothing that needs destroying, so jumping out of it is safe,
 // and what the callbacks record lives in the caller's frame (an object of this
 // one changed after setjmp would be indeterminate after the jump).
@@ -134,10 +105,10 @@ std::string png_write_chunks(PngSink& sink, int width, int height, std::span<con
 }
 
 // Writes to out's temporary file; messages name its target.
-void write_png_file(const PendingFile& out, const PngScanlines& image) {
+void write_png_file(const PendingFile& out, const PngScanlines& image, int threads) {
   const std::string& path = out.target();
   const int width = image.width(), height = image.height();
-  const ImageData idat = png_image_data(image);
+  const ZlibStream idat = zlib_compress_in_bands(image.filtered(), threads);
   std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
   if (!f) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
   PngSink sink{f, 0, ""};
@@ -216,7 +187,7 @@ std::span<const unsigned char> PngScanlines::filtered() const {
 }
 
 std::uint64_t write_png_memory(int width, int height) {
-  return libdeflate_zlib_compress_bound(png_compressor().get(), PngScanlines::bytes(width, height));
+  return zlib_compress_in_bands_memory(PngScanlines::bytes(width, height));
 }
 
 std::uint64_t write_png_rgb8_memory(int width, int height) {
@@ -233,10 +204,10 @@ void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<u
   if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
     throw std::logic_error(
         fmt::format("{}: {} bytes for a {}x{} RGB image", out.target(), rgb.size(), width, height));
-  write_png_file(out, png_scanlines(width, height, rgb.data()));
+  write_png_file(out, png_scanlines(width, height, rgb.data()), 1);
 }
 
-void write_png(PendingFile& out, const PngScanlines& image) { write_png_file(out, image); }
+void write_png(PendingFile& out, const PngScanlines& image, int threads) { write_png_file(out, image, threads); }
 
 void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
   PendingFile out(path);
@@ -282,7 +253,8 @@ std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vec
   std::FILE* f = open_memstream(&data, &size);
   if (!f) throw std::bad_alloc();
   PngSink sink{f, 0, ""};
-  const ImageData idat = png_image_data(png_scanlines(width, height, rgb.data()));
+  const PngScanlines image = png_scanlines(width, height, rgb.data());
+  const ZlibStream idat = zlib_compress_in_bands(image.filtered(), 1);
   const std::string error = png_write_chunks(sink, width, height, idat.span());
   std::fclose(f);
   std::vector<unsigned char> png(data, data + size);

@@ -60,13 +60,15 @@ TEST(ImageIo, PngFromRowsEqualsPngFromAFramebuffer) {
 }
 
 // Rows written in place into the PNG's scanlines and filtered one by one, by
-// two threads in no set order (the path `capsim render` takes), give the file
-// write_png_rgb8 writes of the same bytes, and an independent reader finds
-// those bytes in it: at widths where the Sub filter has no left neighbour to
-// subtract (one pixel) and where it wraps both ways.
+// two threads in no set order, then compressed on three (the path `capsim
+// render` takes), give the file write_png_rgb8 writes of the same bytes on one
+// thread, and an independent reader finds those bytes in it: at widths where
+// the Sub filter has no left neighbour to subtract (one pixel) and where it
+// wraps both ways, and at a size whose image data is several bands.
 TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
   TempDir dir;
-  for (const std::pair<int, int>& shape : {std::pair{37, 23}, std::pair{1, 5}, std::pair{64, 1}}) {
+  for (const std::pair<int, int>& shape :
+       {std::pair{37, 23}, std::pair{1, 5}, std::pair{64, 1}, std::pair{700, 90}}) {
     const int w = shape.first, h = shape.second;  // plain names: lambdas below capture them
     std::vector<unsigned char> rgb(static_cast<std::size_t>(w) * h * 3);
     std::uint32_t state = 777u + static_cast<std::uint32_t>(w);
@@ -86,7 +88,7 @@ TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
     fill(0);
     other.join();
     PendingFile out(dir / "lines.png");
-    write_png(out, image);
+    write_png(out, image, 3);
     out.commit();
     write_png_rgb8(dir / "rgb.png", w, h, rgb);
     EXPECT_TRUE(read_file(dir / "lines.png") == read_file(dir / "rgb.png")) << w << "x" << h;
