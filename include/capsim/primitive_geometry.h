@@ -118,11 +118,16 @@ void leaf_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vecto
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
                         OpCounts& ops);
 
+// The matrix-vector products world_normal(p, point, s, ops) counts in ops.matvec
+// (the same at every point of surface s).
+std::uint64_t world_normal_matvecs(const PreparedPrimitive& p, SurfaceId s);
+
 // world_normal of a round sphere about `center`, to the bit: the same normal
 // as through the matrices, with the same count (the simulated machine does
 // the general work).
+inline constexpr std::uint64_t kRoundSphereNormalMatvecs = 2;
 inline glm::dvec3 round_sphere_normal(const glm::dvec3& center, const glm::dvec3& world_point, OpCounts& ops) {
-  ops.matvec += 2;
+  ops.matvec += kRoundSphereNormalMatvecs;
   return glm::normalize(world_point - center);
 }
 

@@ -68,6 +68,10 @@ class Tracer {
 
   // Partial evaluation: the first root transition in (ray.tmin, ray.tmax), if any.
   bool first_hit(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
+  // Whether first_hit would find a transition, with the same counts added to
+  // ops; the hit's point and normal are counted but not worked out (a shadow
+  // ray needs neither).
+  bool any_hit(const Ray& ray, Scratch& scratch, OpCounts& ops) const;
 
   // The primary ray through the centre of pixel (i, j), shaded; adds the
   // operations spent on it to ops (the caller sums them per row or per pixel, as
@@ -129,7 +133,8 @@ class Tracer {
  private:
   // first_hit's walk; kMayBeCrowded: some voxel holds so many primitives that
   // their crossings are merged into the pending ones at once (tracer.cpp).
-  template <bool kMayBeCrowded>
+  // kFindsHit: fill `hit` (first_hit), or only count its work (any_hit).
+  template <bool kMayBeCrowded, bool kFindsHit>
   bool walk(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
   const SphereFilter* filter(int voxel) const;  // the voxel's, if it has one
   // The colour seen along the ray; primary, if given, also receives the

@@ -216,6 +216,17 @@ void leaf_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vecto
   }
 }
 
+std::uint64_t world_normal_matvecs(const PreparedPrimitive& p, SurfaceId s) {
+  switch (p.kind) {
+    case PrimitiveKind::Sphere: return p.round_sphere ? kRoundSphereNormalMatvecs : 2;
+    case PrimitiveKind::Box: return 1;
+    case PrimitiveKind::Cone: return s == 1 || s == 2 ? 1 : 2;
+    case PrimitiveKind::Mesh: return 1;
+    case PrimitiveKind::Revolution: return 2;
+  }
+  return 1;
+}
+
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
                         OpCounts& ops) {
   glm::dvec3 n{0, 0, 1};

@@ -431,10 +431,15 @@ Ray Tracer::ray_through(double px, double py) const {
 }
 
 bool Tracer::first_hit(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
-  return crowded_voxels_ ? walk<true>(ray, s, ops, hit) : walk<false>(ray, s, ops, hit);
+  return crowded_voxels_ ? walk<true, true>(ray, s, ops, hit) : walk<false, true>(ray, s, ops, hit);
 }
 
-template <bool kMayBeCrowded>
+bool Tracer::any_hit(const Ray& ray, Scratch& s, OpCounts& ops) const {
+  Hit unused;
+  return crowded_voxels_ ? walk<true, false>(ray, s, ops, unused) : walk<false, false>(ray, s, ops, unused);
+}
+
+template <bool kMayBeCrowded, bool kFindsHit>
 bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
   const VoxelGrid& grid = scene_.grid;
   if (++s.stamp == 0) {
@@ -474,6 +479,11 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
       const SurfaceId surface = s.pending.back().surface;
       s.pending.pop_back();
       if (!s.tree.toggle(primitive, ops)) continue;
+      if constexpr (!kFindsHit) {
+        ops.matvec += spheres_[primitive].r2 >= 0 ? kRoundSphereNormalMatvecs
+                                                  : world_normal_matvecs(scene_.prims[primitive], surface);
+        return true;
+      }
       hit.t = t;
       hit.primitive = primitive;
       hit.point = ray.at(t);
@@ -502,8 +512,7 @@ bool Tracer::occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scr
   Ray r{from, d / dist, epsilon_, dist - epsilon_};
   ++ops.rays;
   ++ops.shadow_rays;
-  Hit h;
-  return first_hit(r, scratch, ops, h);
+  return any_hit(r, scratch, ops);
 }
 
 glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops,

@@ -2,6 +2,7 @@
 // tree, voxel generation and the operation counts of whole rays.
 
 #include "capsim/dda.h"
+#include "capsim/parser.h"
 #include "capsim/render.h"
 #include "capsim/status_tree.h"
 #include "capsim/tracer.h"
@@ -16,6 +17,7 @@
 #include <stdexcept>
 #include <random>
 #include <span>
+#include <string>
 
 using namespace capsim;
 using namespace capsim::testing;
@@ -516,5 +518,72 @@ TEST(VoxelGeneration, CountsThePrimitivesTheEntriesAndTheGridsVoxels) {
     EXPECT_EQ(ps.voxel_counts.primitives, 3u) << n;
     EXPECT_EQ(ps.voxel_counts.voxel_entries, ps.grid.entries()) << n;
     EXPECT_EQ(ps.voxel_counts.grid_voxels, static_cast<std::uint64_t>(n * n * n)) << n;
+  }
+}
+
+// A shadow ray asks only whether it is blocked: any_hit skips the hit's point
+// and normal but counts them as first_hit does, so the simulated machine's
+// cycles do not depend on which one a ray used. Random rays through a scene
+// of every kind of primitive (a round sphere, a stretched one, a box, a
+// cylinder, a cone, a mesh and a revolution), in and out of its CSG operators.
+TEST(Tracer, AnyHitAnswersAndCountsAsFirstHit) {
+  const std::string text =
+      "difference() {\n"
+      "  union() {\n"
+      "    sphere(r = 1.5);\n"
+      "    translate([3, 0, 0]) scale([1, 2, 0.5]) sphere(r = 1);\n"
+      "    translate([-4, -1, -1]) cube([2, 2, 2]);\n"
+      "    translate([0, 3, -1]) cylinder(h = 2, r = 1);\n"
+      "    translate([0, -3, -1]) cylinder(h = 2, r1 = 1, r2 = 0);\n"
+      "    translate([0, 0, 3]) polyhedron(points = [[0,0,0],[2,0,0],[0,2,0],[0,0,2]],\n"
+      "                                    faces = [[0,2,1],[0,1,3],[0,3,2],[1,2,3]]);\n"
+      "    translate([0, 0, -4]) rotate_extrude() translate([2, 0, 0]) circle(r = 0.5);\n"
+      "  }\n"
+      "  translate([0.5, 0, 0]) sphere(r = 0.8);\n"
+      "}\n";
+  for (const int grid : {1, 4, 9}) {
+    PrepareOptions o;
+    o.grid = grid;
+    const PreparedScene ps = prepare_scene(parse_scene(text, "kinds.csg"), o);
+    const Tracer tracer(ps, {});
+    Tracer::Scratch first_scratch(ps), any_scratch(ps);
+    std::mt19937_64 rng(grid);
+    std::uniform_real_distribution<double> u(-6, 6);
+    int hits = 0;
+    for (int k = 0; k < 4000; ++k) {
+      const glm::dvec3 from(u(rng), u(rng), u(rng)), to(u(rng), u(rng), u(rng));
+      if (from == to) continue;
+      const Ray r{from, glm::normalize(to - from), 1e-9, k % 2 ? glm::length(to - from) : kInfinity};
+      OpCounts first_ops, any_ops;
+      Hit h;
+      const bool met = tracer.first_hit(r, first_scratch, first_ops, h);
+      ASSERT_EQ(tracer.any_hit(r, any_scratch, any_ops), met) << grid << " " << k;
+      ASSERT_EQ(any_ops, first_ops) << grid << " " << k;
+      hits += met;
+    }
+    EXPECT_GT(hits, 1000) << grid;
+  }
+}
+
+// world_normal_matvecs is what world_normal adds to ops.matvec, on every
+// surface of every kind of primitive.
+TEST(PrimitiveGeometry, NormalMatvecCountsAreWorldNormals) {
+  const std::string text =
+      "sphere(r = 1);\n"
+      "scale([1, 2, 1]) sphere(r = 1);\n"
+      "cube(1);\n"
+      "cylinder(h = 2, r1 = 1, r2 = 0.5);\n"
+      "cylinder(h = 2, r1 = 1, r2 = 0);\n"
+      "polyhedron(points = [[0,0,0],[2,0,0],[0,2,0],[0,0,2]], faces = [[0,2,1],[0,1,3],[0,3,2],[1,2,3]]);\n"
+      "rotate_extrude() translate([2, 0, 0]) square(1);\n";
+  const Scene scene = parse_scene(text, "kinds.csg");
+  ASSERT_EQ(scene.primitives.size(), 7u);
+  for (const Primitive& prim : scene.primitives) {
+    const PreparedPrimitive p = prepare_primitive(prim);
+    for (SurfaceId s = 0; s < 4; ++s) {
+      OpCounts ops;
+      world_normal(p, {0.25, 0.5, 0.75}, s, ops);
+      EXPECT_EQ(ops.matvec, world_normal_matvecs(p, s)) << static_cast<int>(p.kind) << " surface " << s;
+    }
   }
 }
