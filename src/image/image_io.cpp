@@ -3,10 +3,9 @@
 #include "capsim/srgb.h"
 #include "image/zlib_bands.h"
 
-#include <OpenEXR/ImfChannelList.h>
-#include <OpenEXR/ImfFrameBuffer.h>
-#include <OpenEXR/ImfHeader.h>
-#include <OpenEXR/ImfOutputFile.h>
+#include "capsim/shared_library.h"
+#include "image/exr_writer_module.h"
+
 #include <fmt/core.h>
 #include <png.h>
 
@@ -120,6 +119,28 @@ void write_png_file(const PendingFile& out, const PngScanlines& image, int threa
   if (!closed) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(close_error)));
 }
 
+// The EXR writer's module (src/image/exr_writer_module.h): where an
+// installed capsim keeps it, seen from the program's directory
+// (CAPSIM_EXR_MODULE_FROM_BIN, from CMakeLists.txt), else where this build
+// made it (CAPSIM_EXR_MODULE_BUILT), for the programs of the build tree.
+#if !defined(CAPSIM_EXR_MODULE_FROM_BIN) || !defined(CAPSIM_EXR_MODULE_BUILT)
+#error "CMakeLists.txt defines CAPSIM_EXR_MODULE_FROM_BIN and CAPSIM_EXR_MODULE_BUILT for this file"
+#endif
+std::string exr_module_path() {
+  std::error_code ec;
+  const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const std::filesystem::path installed = (exe.parent_path() / CAPSIM_EXR_MODULE_FROM_BIN).lexically_normal();
+    if (std::filesystem::is_regular_file(installed, ec)) return installed.string();
+  }
+  return CAPSIM_EXR_MODULE_BUILT;
+}
+
+const SharedLibrary& exr_module() {
+  static const SharedLibrary module(exr_module_path(), "EXR output");
+  return module;
+}
+
 void write_exr_file(const PendingFile& out, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
   const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
   // Planar copies, one per channel, in the order the header lists them.
@@ -133,20 +154,18 @@ void write_exr_file(const PendingFile& out, const Framebuffer& fb, const std::ve
   planes.emplace_back("id", fb.id);
   for (const ExtraChannel& e : extra) planes.emplace_back(e.name, e.values);
 
-  Imf::Header header(fb.width, fb.height);
-  Imf::FrameBuffer frame;
-  for (auto& [name, values] : planes) {
-    header.channels().insert(name, Imf::Channel(Imf::FLOAT));
-    frame.insert(name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(values.data()), sizeof(float),
-                                  sizeof(float) * static_cast<std::size_t>(fb.width)));
+  std::vector<const char*> names;
+  std::vector<const float*> values;
+  for (const auto& [name, plane] : planes) {
+    names.push_back(name.c_str());
+    values.push_back(plane.data());
   }
-  try {
-    Imf::OutputFile file(out.temp_path().c_str(), header);
-    file.setFrameBuffer(frame);
-    file.writePixels(fb.height);
-  } catch (const std::exception& e) {
+  char error[1024] = "";
+  const auto write = exr_module().function<decltype(&capsim_write_exr)>("capsim_write_exr");
+  if (write(out.temp_path().c_str(), fb.width, fb.height, static_cast<int>(planes.size()), names.data(),
+            values.data(), error, sizeof error) != 0) {
     // OpenEXR names the file it was given: name the target instead.
-    std::string message = e.what();
+    std::string message = error;
     for (auto at = message.find(out.temp_path()); at != std::string::npos; at = message.find(out.temp_path()))
       message.replace(at, out.temp_path().size(), out.target());
     throw std::runtime_error(fmt::format("{}: {}", out.target(), message));

@@ -1,4 +1,4 @@
-// cmake --install puts the program, its documentation, the sample scenes and
+// cmake --install puts the program, its EXR module, its documentation, the sample scenes and
 // the baselines of `bench modes` under the prefix; the installed program runs,
 // and from any directory finds its models and baselines under the prefix's
 // share/capsim, writing only into that directory.
@@ -40,6 +40,19 @@ TEST(Install, PutsTheProgramDocsAndScenesUnderThePrefix) {
                              (dir / "balls.png") + " --size 16x16";
   ASSERT_EQ(std::system(render.c_str()), 0);
   EXPECT_TRUE(fs::is_regular_file(dir / "balls.png"));
+
+  // An .exr is written by the EXR module installed under the prefix (the
+  // loader's log names each library it opens), not by the build's.
+  const std::string exr = "LD_DEBUG=files " + capsim + " render " +
+                          (root / "share/capsim/scenes/balls.csg").string() + " -o " + (dir / "balls.exr") +
+                          " --size 16x16 2>" + (dir / "exr.log");
+  ASSERT_EQ(std::system(exr.c_str()), 0) << read_file(dir / "exr.log");
+  EXPECT_TRUE(fs::is_regular_file(dir / "balls.exr"));
+  const std::string log = read_file(dir / "exr.log");
+  const auto at = log.find("file=" + prefix + "/");
+  ASSERT_NE(at, std::string::npos) << log;
+  const std::string opened = log.substr(at + 5, log.find(' ', at) - (at + 5));
+  EXPECT_TRUE(opened.ends_with("/capsim/libcapsim_exr.so")) << opened;
 }
 
 TEST(Install, TheInstalledProgramFindsItsDataFromAnyDirectoryAndWritesOnlyThere) {

@@ -63,14 +63,16 @@ TEST(SharedLibrary, RefusesASymbolTheLibraryDoesNotHave) {
 }
 
 // The loader lists what it maps at start (LD_TRACE_LOADED_OBJECTS, as ldd
-// does): lib3MF, libxml2, the font libraries and MPI's are not among them, nor
-// libzip, libcrypto, ICU, GLib and Open MPI's runtime, which only they bring.
+// does): lib3MF, libxml2, the font libraries, MPI's and OpenEXR's (which the
+// EXR module brings) are not among them, nor libzip, libcrypto, ICU, GLib and
+// Open MPI's runtime, which only they bring.
 TEST(SharedLibrary, CapsimStartsWithoutTheLibrariesItOpensOnUse) {
   const TempDir dir;
   const auto r = run_capsim("--version", dir, "export LD_TRACE_LOADED_OBJECTS=1;");
   ASSERT_EQ(r.status, 0) << r.err;
   ASSERT_NE(r.out.find("libc.so.6"), std::string::npos) << r.out;
   for (const char* lib : {"lib3MF", "libzip", "libcrypto", "libxml2", "libicuuc", "libfreetype", "libharfbuzz",
-                          "libfontconfig", "libglib", "libmpi", "libopen-pal", "libhwloc", "libevent"})
+                          "libfontconfig", "libglib", "libmpi", "libopen-pal", "libhwloc", "libevent", "libOpenEXR",
+                          "libImath", "libIex", "libIlmThread", "libcapsim_exr"})
     EXPECT_EQ(r.out.find(lib), std::string::npos) << lib << " is loaded at start:\n" << r.out;
 }
