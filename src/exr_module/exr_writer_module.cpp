@@ -9,6 +9,18 @@
 #include <cstring>
 #include <exception>
 
+namespace {
+
+// text into error[0..size), cut to fit and NUL-terminated.
+void copy_message(const char* text, char* error, std::size_t size) {
+  if (size == 0) return;
+  const std::size_t n = std::min(std::strlen(text), size - 1);
+  std::memcpy(error, text, n);
+  error[n] = '\0';
+}
+
+}  // namespace
+
 extern "C" int capsim_write_exr(const char* path, int width, int height, int channels,
                                 const char* const* names, const float* const* planes, char* error,
                                 std::size_t error_size) {
@@ -26,14 +38,10 @@ extern "C" int capsim_write_exr(const char* path, int width, int height, int cha
     file.writePixels(height);
     return 0;
   } catch (const std::exception& e) {
-    if (error_size > 0) {
-      const std::size_t n = std::min(std::strlen(e.what()), error_size - 1);
-      std::memcpy(error, e.what(), n);
-      error[n] = '\0';
-    }
+    copy_message(e.what(), error, error_size);
     return 1;
   } catch (...) {
-    if (error_size > 0) std::strncpy(error, "OpenEXR failed for a reason it did not name", error_size - 1)[error_size - 1] = '\0';
+    copy_message("OpenEXR failed for a reason it did not name", error, error_size);
     return 1;
   }
 }

@@ -1,10 +1,9 @@
 #include "capsim/image_io.h"
 
-#include "capsim/srgb.h"
-#include "image/zlib_bands.h"
-
 #include "capsim/shared_library.h"
+#include "capsim/srgb.h"
 #include "image/exr_writer_module.h"
+#include "image/zlib_bands.h"
 
 #include <fmt/core.h>
 #include <png.h>

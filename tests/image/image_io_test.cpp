@@ -2,8 +2,10 @@
 // independent reader (OpenImageIO), and failures that leave nothing behind.
 
 #include "capsim/image_io.h"
+#include "capsim/shared_library.h"
 #include "capsim/srgb.h"
 #include "support/cli_run.h"
+#include "image/exr_writer_module.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -99,6 +101,43 @@ TEST(ImageIo, ExrHoldsEveryChannelExactly) {
   EXPECT_EQ(at(0, "id"), -1.0f);
   EXPECT_TRUE(std::isinf(at(0, "Z")));
   EXPECT_EQ(at(3, "cycles"), 16777216.0f);
+}
+
+// The EXR module's C function, called as the image layer calls it: a file
+// OpenImageIO reads back, and OpenEXR's refusal returned as a message cut to the
+// room given, never thrown across the C boundary.
+TEST(ImageIo, TheExrModuleWritesAndReturnsOpenExrsMessage) {
+  TempDir dir;
+  const capsim::SharedLibrary module(CAPSIM_EXR_MODULE_BUILT, "the test");
+  const auto write = module.function<decltype(&capsim_write_exr)>("capsim_write_exr");
+  const char* names[] = {"a", "b"};
+  const float a[] = {1.5f, -2, 0.25f}, b[] = {7, 8, 9};
+  const float* planes[] = {a, b};
+  char error[1024] = "untouched";
+  ASSERT_EQ(write((dir / "m.exr").c_str(), 3, 1, 2, names, planes, error, sizeof error), 0) << error;
+  EXPECT_STREQ(error, "untouched");
+  auto in = OIIO::ImageInput::open(dir / "m.exr");
+  ASSERT_TRUE(in);
+  ASSERT_EQ(in->spec().nchannels, 2);
+  std::vector<float> px(6);
+  ASSERT_TRUE(in->read_image(0, 0, 0, 2, OIIO::TypeDesc::FLOAT, px.data()));
+  const std::vector<std::string>& read_names = in->spec().channelnames;
+  const auto channel = [&](const std::string& name) {
+    const auto c = static_cast<std::size_t>(std::find(read_names.begin(), read_names.end(), name) - read_names.begin());
+    return std::vector<float>{px[c], px[2 + c], px[4 + c]};
+  };
+  EXPECT_EQ(channel("a"), (std::vector<float>{1.5f, -2, 0.25f}));
+  EXPECT_EQ(channel("b"), (std::vector<float>{7, 8, 9}));
+
+  const std::string missing = dir / "missing/m.exr";
+  ASSERT_EQ(write(missing.c_str(), 3, 1, 2, names, planes, error, sizeof error), 1);
+  EXPECT_NE(std::string(error).find("missing/m.exr"), std::string::npos) << error;
+  char four[4] = "xyz";
+  ASSERT_EQ(write(missing.c_str(), 3, 1, 2, names, planes, four, sizeof four), 1);
+  EXPECT_EQ(std::strlen(four), 3u);
+  char none[1] = {'x'};
+  ASSERT_EQ(write(missing.c_str(), 3, 1, 2, names, planes, none, 0), 1);
+  EXPECT_EQ(none[0], 'x');
 }
 
 TEST(ImageIo, FailureLeavesNoFile) {
