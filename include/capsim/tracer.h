@@ -30,6 +30,7 @@ struct Hit {
   glm::dvec3 point{0};
   glm::dvec3 normal{0};  // outward normal of the CSG solid, unit length
   bool entering = true;  // the ray goes from outside the solid to inside here
+  SurfaceId surface = 0;  // of the primitive, where the ray meets it
 };
 
 // What one pixel returns: linear colour, coverage, and the primary ray's visible
@@ -62,6 +63,7 @@ class Tracer {
     std::vector<Crossing> fresh;    // crossings met in the current voxel, not yet in pending
     std::vector<LineCrossing> leaf_crossings, leaf_work;  // one mesh's crossings, and its hits
     std::vector<std::uint32_t> candidates;  // a filtered voxel's spheres the line may meet
+    std::vector<Hit> row_hits;              // shade_primary_row's hits, one a ray
   };
 
   Tracer(const PreparedScene& scene, TraceOptions options);
@@ -85,6 +87,14 @@ class Tracer {
   // A primary ray shaded: trace_pixel's and trace_screen_point's work after
   // the ray (for rays made by primary_rays).
   PixelSample shade_primary(const Ray& ray, Scratch& scratch, OpCounts& ops) const;
+  // out[i] = shade_primary(rays[i], scratch, ops) to the bit, with the same
+  // counts, for a row of primary rays: every ray's hit first, then every hit's
+  // point and normal, then the shading. A hit's normal and its shading are
+  // chains of square roots and divisions that nothing else waits for; taken
+  // one pixel after another, each is begun before the last one is done.
+  // Precondition: out.size() == rays.size().
+  void shade_primary_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch,
+                         OpCounts& ops) const;
 
   // screen_ray(i + 0.5, j + 0.5), to the bit: on the camera's screen, from
   // the offsets of the pixels' centres worked out once (two divisions fewer
@@ -133,13 +143,20 @@ class Tracer {
  private:
   // first_hit's walk; kMayBeCrowded: some voxel holds so many primitives that
   // their crossings are merged into the pending ones at once (tracer.cpp).
-  // kFindsHit: fill `hit` (first_hit), or only count its work (any_hit).
+  // kFindsHit: fill the hit's distance, primitive, surface and side, leaving
+  // its point and normal to complete_hit (first_hit), or only count the work
+  // of all of it (any_hit).
   template <bool kMayBeCrowded, bool kFindsHit>
   bool walk(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
+  // The point and the solid's normal of a hit the walk found along `ray`.
+  void complete_hit(const Ray& ray, Hit& hit, OpCounts& ops) const;
   const SphereFilter* filter(int voxel) const;  // the voxel's, if it has one
   // The colour seen along the ray; primary, if given, also receives the
   // coverage, distance and primitive of what the ray meets (a miss leaves it).
   glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, PixelSample* primary) const;
+  // shade's colour of a completed hit along the ray: lights, then reflection
+  // and refraction below max_depth.
+  glm::dvec3 shade_hit(const Ray& ray, const Hit& h, int depth, Scratch& scratch, OpCounts& ops) const;
   // The ray through the screen point at offsets (px, py) from the screen's
   // centre, in units of half_width_ and half_height_ (screen_ray's).
   Ray ray_through(double px, double py) const;

@@ -100,7 +100,7 @@ void render_rows(const Tracer& tracer, int threads, const RowSink& store, Render
       OpCounts& ops = row_ops[j];
       if (aa.depth == 0) {
         tracer.primary_rays(j, w.rays);
-        for (int i = 0; i < cam.width; ++i) w.row[i] = tracer.shade_primary(w.rays[i], w.scratch, ops);
+        tracer.shade_primary_row(w.rays, w.row, w.scratch, ops);
       } else {
         for (int i = 0; i < cam.width; ++i) {
           const ScreenSample c[4] = {corners.at(i, j), corners.at(i + 1, j), corners.at(i, j + 1),

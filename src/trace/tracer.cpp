@@ -431,7 +431,9 @@ Ray Tracer::ray_through(double px, double py) const {
 }
 
 bool Tracer::first_hit(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
-  return crowded_voxels_ ? walk<true, true>(ray, s, ops, hit) : walk<false, true>(ray, s, ops, hit);
+  const bool found = crowded_voxels_ ? walk<true, true>(ray, s, ops, hit) : walk<false, true>(ray, s, ops, hit);
+  if (found) complete_hit(ray, hit, ops);
+  return found;
 }
 
 bool Tracer::any_hit(const Ray& ray, Scratch& s, OpCounts& ops) const {
@@ -486,23 +488,27 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
       }
       hit.t = t;
       hit.primitive = primitive;
-      hit.point = ray.at(t);
+      hit.surface = surface;
       hit.entering = s.tree.root_inside();
-      // A round sphere's normal comes from the packed slot the walk reads
-      // already, not from the primitive's record.
-      const RoundSphereSlot& sphere = spheres_[primitive];
-      const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere.center, hit.point, ops)
-                                          : world_normal(scene_.prims[primitive], hit.point, surface, ops);
-      // The primitive's outward normal, turned to be the solid's: against the
-      // ray where the ray enters the solid, along it where it leaves (surfaces
-      // that a subtracted primitive contributes face the other way).
-      const bool against = glm::dot(n, ray.dir) < 0;
-      hit.normal = (against == hit.entering) ? n : -n;
       return true;
     }
     if (!dda.step()) return false;
     ++ops.dda_steps;
   } while (true);
+}
+
+void Tracer::complete_hit(const Ray& ray, Hit& hit, OpCounts& ops) const {
+  hit.point = ray.at(hit.t);
+  // A round sphere's normal comes from the packed slot the walk reads
+  // already, not from the primitive's record.
+  const RoundSphereSlot& sphere = spheres_[hit.primitive];
+  const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere.center, hit.point, ops)
+                                      : world_normal(scene_.prims[hit.primitive], hit.point, hit.surface, ops);
+  // The primitive's outward normal, turned to be the solid's: against the
+  // ray where the ray enters the solid, along it where it leaves (surfaces
+  // that a subtracted primitive contributes face the other way).
+  const bool against = glm::dot(n, ray.dir) < 0;
+  hit.normal = (against == hit.entering) ? n : -n;
 }
 
 bool Tracer::occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
@@ -525,7 +531,10 @@ glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& 
     primary->depth = h.t;
     primary->primitive = static_cast<int>(h.primitive);
   }
+  return shade_hit(ray, h, depth, scratch, ops);
+}
 
+glm::dvec3 Tracer::shade_hit(const Ray& ray, const Hit& h, int depth, Scratch& scratch, OpCounts& ops) const {
   const Primitive& prim = scene_.scene.primitives[h.primitive];
   const Material& m = prim.material;
   const glm::dvec3 facing = glm::dot(h.normal, ray.dir) < 0 ? h.normal : -h.normal;
@@ -576,6 +585,31 @@ PixelSample Tracer::shade_primary(const Ray& ray, Scratch& scratch, OpCounts& op
   ++ops.primary_rays;
   s.color = shade(ray, 0, scratch, ops, &s);
   return s;
+}
+
+void Tracer::shade_primary_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch,
+                               OpCounts& ops) const {
+  // shade_primary's work, pixel by pixel, in three passes; a miss keeps the
+  // sample's primitive at -1.
+  std::vector<Hit>& hits = scratch.row_hits;
+  hits.resize(rays.size());
+  for (std::size_t i = 0; i < rays.size(); ++i) {
+    ++ops.primary_rays;
+    ++ops.rays;
+    PixelSample& s = out[i];
+    s = PixelSample{};
+    Hit& h = hits[i];
+    const bool found = crowded_voxels_ ? walk<true, true>(rays[i], scratch, ops, h)
+                                       : walk<false, true>(rays[i], scratch, ops, h);
+    if (!found) continue;
+    s.alpha = 1;
+    s.depth = h.t;
+    s.primitive = static_cast<int>(h.primitive);
+  }
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    if (out[i].primitive >= 0) complete_hit(rays[i], hits[i], ops);
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    out[i].color = out[i].primitive >= 0 ? shade_hit(rays[i], hits[i], 0, scratch, ops) : scene_.scene.background;
 }
 
 }  // namespace capsim

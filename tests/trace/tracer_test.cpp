@@ -527,24 +527,10 @@ TEST(VoxelGeneration, CountsThePrimitivesTheEntriesAndTheGridsVoxels) {
 // of every kind of primitive (a round sphere, a stretched one, a box, a
 // cylinder, a cone, a mesh and a revolution), in and out of its CSG operators.
 TEST(Tracer, AnyHitAnswersAndCountsAsFirstHit) {
-  const std::string text =
-      "difference() {\n"
-      "  union() {\n"
-      "    sphere(r = 1.5);\n"
-      "    translate([3, 0, 0]) scale([1, 2, 0.5]) sphere(r = 1);\n"
-      "    translate([-4, -1, -1]) cube([2, 2, 2]);\n"
-      "    translate([0, 3, -1]) cylinder(h = 2, r = 1);\n"
-      "    translate([0, -3, -1]) cylinder(h = 2, r1 = 1, r2 = 0);\n"
-      "    translate([0, 0, 3]) polyhedron(points = [[0,0,0],[2,0,0],[0,2,0],[0,0,2]],\n"
-      "                                    faces = [[0,2,1],[0,1,3],[0,3,2],[1,2,3]]);\n"
-      "    translate([0, 0, -4]) rotate_extrude() translate([2, 0, 0]) circle(r = 0.5);\n"
-      "  }\n"
-      "  translate([0.5, 0, 0]) sphere(r = 0.8);\n"
-      "}\n";
   for (const int grid : {1, 4, 9}) {
     PrepareOptions o;
     o.grid = grid;
-    const PreparedScene ps = prepare_scene(parse_scene(text, "kinds.csg"), o);
+    const PreparedScene ps = prepare_scene(parse_scene(kEveryKindDifference, "kinds.csg"), o);
     const Tracer tracer(ps, {});
     Tracer::Scratch first_scratch(ps), any_scratch(ps);
     std::mt19937_64 rng(grid);
