@@ -189,12 +189,36 @@ struct PackedRow {
   OpCounts at(std::size_t x) const { return ops.at(first + x); }
 };
 
+// A row's rays and their operation counts, one a ray.
+struct RowCostWorkspace : RowWorkspace {
+  RowCostWorkspace(const Tracer& tracer, int rays) : RowWorkspace(tracer, rays), ops(static_cast<std::size_t>(rays)) {}
+  std::vector<OpCounts> ops;
+};
+
+// A row of pixels traced together (Tracer::shade_primary_row): their rays,
+// samples and operation counts.
+struct PixelRowWorkspace : RowCostWorkspace {
+  PixelRowWorkspace(const Tracer& tracer, int rays) : RowCostWorkspace(tracer, rays), samples(ops.size()) {}
+  std::vector<PixelSample> samples;
+};
+
 // Where trace_cells' samples and operations come from: the tracer, tracing
 // them now, or a screen it traced ahead (ScreenTrace), which holds the same
 // samples and counts. Either gives the same cells to the bit.
 struct TracingNow {
   const Tracer& tracer;
-  PixelSample pixel(int x, int y, Tracer::Scratch& s, OpCounts& ops) const { return tracer.trace_pixel(x, y, s, ops); }
+  // Row y's pixels: trace them all into w (its rays' count is the row's width).
+  void row(int y, PixelRowWorkspace& w) const {
+    tracer.primary_rays(y, w.rays);
+    std::fill(w.ops.begin(), w.ops.end(), OpCounts{});
+    tracer.shade_primary_row(w.rays, w.samples, w.scratch, w.ops);
+  }
+  // Pixel (x, y) of the row traced last into w; its operations are added to ops.
+  PixelSample pixel(const PixelRowWorkspace& w, int x, int, OpCounts& ops) const {
+    ops += w.ops[static_cast<std::size_t>(x)];
+    return w.samples[static_cast<std::size_t>(x)];
+  }
+  int row_rays(int width) const { return width; }
   const unsigned char* srgb8(int, int) const { return nullptr; }
   template <class RowCost>
   CornerSamples corners(int threads, const RowCost& cost, Progress* progress) const {
@@ -210,10 +234,12 @@ struct TracingNow {
 struct TracedAhead {
   const ScreenTrace& screen;
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * screen.width + x; }
-  PixelSample pixel(int x, int y, Tracer::Scratch&, OpCounts& ops) const {
+  void row(int, PixelRowWorkspace&) const {}
+  PixelSample pixel(const PixelRowWorkspace&, int x, int y, OpCounts& ops) const {
     screen.pixel_ops.add_to(at(x, y), ops);
     return screen.pixels[at(x, y)];
   }
+  int row_rays(int) const { return 0; }
   const unsigned char* srgb8(int x, int y) const { return screen.srgb8.data() + at(x, y) * 3; }
   // The corners' costs handed on in row order, on this thread.
   template <class RowCost>
@@ -364,28 +390,31 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
   // them (neighbouring rays share voxels and primitives in the caches), and each
   // sample goes to the video-memory slot of the cell whose window shows it.
   tbb::enumerable_thread_specific<Sums> sums([&] { return Sums(layout, chunk_pixels); });
-  tbb::enumerable_thread_specific<Tracer::Scratch> scratch([&] { return Tracer::Scratch(tracer.scene()); });
+  tbb::enumerable_thread_specific<PixelRowWorkspace> workspaces(
+      [&] { return PixelRowWorkspace(tracer, source.row_rays(layout.width())); });
   parallel_rows(threads, layout.height(), [&](const tbb::blocked_range<int>& rows) {
-    Tracer::Scratch& s = scratch.local();
+    PixelRowWorkspace& w = workspaces.local();
     Sums& sum = sums.local();
-    for (int y = rows.begin(); y != rows.end(); ++y)
+    for (int y = rows.begin(); y != rows.end(); ++y) {
+      source.row(y, w);
       for (int x = 0; x < layout.width(); ++x) {
         const PixelOwner owner = owners.owner(x, y);
         TracedCell& out = cells[owner.cell];
         ++sum.items[owner.cell];
         if (summed_only) {
-          // trace_pixel adds its operations to the sum directly.
-          store(out, owner.video_index, source.pixel(x, y, s, sum.of(owner, chunk_pixels)), format,
+          // The pixel's operations go to the sum directly.
+          store(out, owner.video_index, source.pixel(w, x, y, sum.of(owner, chunk_pixels)), format,
                 source.srgb8(x, y));
           continue;
         }
         OpCounts ops;
-        store(out, owner.video_index, source.pixel(x, y, s, ops), format, source.srgb8(x, y));
+        store(out, owner.video_index, source.pixel(w, x, y, ops), format, source.srgb8(x, y));
         const std::uint64_t cycles = saturated_cycles(ops, costs);
         if (floats) out.pixel_cycles[owner.video_index] = cycles;
         if (keep_write_cycles) out.write_cycles[owner.video_index] = cycles;
         sum.of(owner, chunk_pixels) += ops;
       }
+    }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * layout.width());
   });
   if (const auto overflow = fold(sums, cell_count, costs, [&](CellId c, const CostBreakdown& work, const OpCounts& ops) {
@@ -446,23 +475,24 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
         nullptr);
   }
   // Antialiased pixels trace from the corners; only unantialiased rows are
-  // made as rows of rays.
-  tbb::enumerable_thread_specific<RowWorkspace> workspaces(
-      [&] { return RowWorkspace(tracer, aa.depth == 0 ? cam.width : 0); });
+  // made as rows of rays, and shaded as rows.
+  const int row_rays = aa.depth == 0 ? cam.width : 0;
+  tbb::enumerable_thread_specific<RowCostWorkspace> workspaces([&] { return RowCostWorkspace(tracer, row_rays); });
   parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
-    RowWorkspace& w = workspaces.local();
+    RowCostWorkspace& w = workspaces.local();
     Tracer::Scratch& s = w.scratch;
-    const std::span<Ray> rays = w.rays;
     for (int y = rows.begin(); y != rows.end(); ++y) {
-      if (aa.depth == 0) tracer.primary_rays(y, rays);
+      const std::size_t first = static_cast<std::size_t>(y) * cam.width;
+      if (aa.depth == 0) {
+        tracer.primary_rays(y, w.rays);
+        std::fill(w.ops.begin(), w.ops.end(), OpCounts{});
+        tracer.shade_primary_row(w.rays, std::span<PixelSample>(t.pixels).subspan(first, w.rays.size()), s, w.ops);
+        for (std::size_t x = 0; x < w.ops.size(); ++x) t.pixel_ops.set(first + x, w.ops[x]);
+        continue;
+      }
       for (int x = 0; x < cam.width; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * cam.width + x;
+        const std::size_t i = first + x;
         OpCounts ops;
-        if (aa.depth == 0) {
-          t.pixels[i] = tracer.shade_primary(rays[static_cast<std::size_t>(x)], s, ops);
-          t.pixel_ops.set(i, ops);
-          continue;
-        }
         const ScreenSample c[4] = {t.corners.at(x, y), t.corners.at(x + 1, y), t.corners.at(x, y + 1),
                                    t.corners.at(x + 1, y + 1)};
         const AntialiasedPixel px = resolve_pixel(tracer, x, y, c, aa, s, ops);

@@ -95,6 +95,10 @@ class Tracer {
   // Precondition: out.size() == rays.size().
   void shade_primary_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch,
                          OpCounts& ops) const;
+  // The same, each ray's operations added to its own ops[i].
+  // Precondition: out.size() == ops.size() == rays.size().
+  void shade_primary_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch,
+                         std::span<OpCounts> ops) const;
 
   // screen_ray(i + 0.5, j + 0.5), to the bit: on the camera's screen, from
   // the offsets of the pixels' centres worked out once (two divisions fewer
@@ -154,6 +158,9 @@ class Tracer {
   // The colour seen along the ray; primary, if given, also receives the
   // coverage, distance and primitive of what the ray meets (a miss leaves it).
   glm::dvec3 shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& ops, PixelSample* primary) const;
+  // shade_primary_row with ray i's operations added to ops_of(i).
+  template <class OpsOf>
+  void shade_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch, OpsOf ops_of) const;
   // shade's colour of a completed hit along the ray: lights, then reflection
   // and refraction below max_depth.
   glm::dvec3 shade_hit(const Ray& ray, const Hit& h, int depth, Scratch& scratch, OpCounts& ops) const;

@@ -3,6 +3,8 @@
 #include "capsim/host_threads.h"
 #include "capsim/srgb.h"
 
+#include <algorithm>
+
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 
@@ -35,9 +37,11 @@ struct PixelRowWorkspace : RowWorkspace {
   std::vector<PixelSample> row;
 };
 
-// A row of corners' costs, beside their rays.
+// A row of corners' samples and costs, beside their rays.
 struct CornerRowWorkspace : RowWorkspace {
-  CornerRowWorkspace(const Tracer& tracer, int corners) : RowWorkspace(tracer, corners), row(corners) {}
+  CornerRowWorkspace(const Tracer& tracer, int corners)
+      : RowWorkspace(tracer, corners), samples(corners), row(corners) {}
+  std::vector<PixelSample> samples;
   std::vector<OpCounts> row;
 };
 
@@ -60,14 +64,13 @@ CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostS
   parallel_rows(threads, cam.height + 1, [&](const tbb::blocked_range<int>& rows) {
     CornerRowWorkspace& w = workspaces.local();
     for (int y = rows.begin(); y != rows.end(); ++y) {
+      // trace_screen_sample(tracer, x, y, scratch, ops) for the row's corners,
+      // from the rays made already
       tracer.corner_rays(y, w.rays);
-      for (int x = 0; x <= cam.width; ++x) {
-        OpCounts& ops = w.row[static_cast<std::size_t>(x)];
-        ops = OpCounts{};
-        // trace_screen_sample(tracer, x, y, scratch, ops), from the ray made already
-        corners.samples[corners.index(x, y)] =
-            ScreenSample::from(tracer.shade_primary(w.rays[static_cast<std::size_t>(x)], w.scratch, ops));
-      }
+      std::fill(w.row.begin(), w.row.end(), OpCounts{});
+      tracer.shade_primary_row(w.rays, w.samples, w.scratch, w.row);
+      for (int x = 0; x <= cam.width; ++x)
+        corners.samples[corners.index(x, y)] = ScreenSample::from(w.samples[static_cast<std::size_t>(x)]);
       cost(y, w.row);
     }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * (cam.width + 1));

@@ -589,11 +589,23 @@ PixelSample Tracer::shade_primary(const Ray& ray, Scratch& scratch, OpCounts& op
 
 void Tracer::shade_primary_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch,
                                OpCounts& ops) const {
+  shade_row(rays, out, scratch, [&](std::size_t) -> OpCounts& { return ops; });
+}
+
+void Tracer::shade_primary_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch,
+                               std::span<OpCounts> ops) const {
+  shade_row(rays, out, scratch, [&](std::size_t i) -> OpCounts& { return ops[i]; });
+}
+
+template <class OpsOf>
+void Tracer::shade_row(std::span<const Ray> rays, std::span<PixelSample> out, Scratch& scratch,
+                       OpsOf ops_of) const {
   // shade_primary's work, pixel by pixel, in three passes; a miss keeps the
   // sample's primitive at -1.
   std::vector<Hit>& hits = scratch.row_hits;
   hits.resize(rays.size());
   for (std::size_t i = 0; i < rays.size(); ++i) {
+    OpCounts& ops = ops_of(i);
     ++ops.primary_rays;
     ++ops.rays;
     PixelSample& s = out[i];
@@ -607,9 +619,10 @@ void Tracer::shade_primary_row(std::span<const Ray> rays, std::span<PixelSample>
     s.primitive = static_cast<int>(h.primitive);
   }
   for (std::size_t i = 0; i < rays.size(); ++i)
-    if (out[i].primitive >= 0) complete_hit(rays[i], hits[i], ops);
+    if (out[i].primitive >= 0) complete_hit(rays[i], hits[i], ops_of(i));
   for (std::size_t i = 0; i < rays.size(); ++i)
-    out[i].color = out[i].primitive >= 0 ? shade_hit(rays[i], hits[i], 0, scratch, ops) : scene_.scene.background;
+    out[i].color =
+        out[i].primitive >= 0 ? shade_hit(rays[i], hits[i], 0, scratch, ops_of(i)) : scene_.scene.background;
 }
 
 }  // namespace capsim

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <span>
@@ -44,7 +45,8 @@ void expect_same_sample(const PixelSample& row, const PixelSample& single, int i
 }  // namespace
 
 // On grids of 1 (every primitive in one crowded voxel), 4 and 9 voxels a side,
-// with full shading and primary rays only.
+// with full shading and primary rays only; the counts summed over the row and
+// kept ray by ray.
 TEST(ShadePrimaryRow, IsShadePrimaryRayByRayToTheBit) {
   for (const int grid : {1, 4, 9}) {
     for (const bool primary_only : {false, true}) {
@@ -60,12 +62,26 @@ TEST(ShadePrimaryRow, IsShadePrimaryRayByRayToTheBit) {
       std::vector<Ray> rays(width);
       std::vector<PixelSample> out(width);
       int hits = 0, misses = 0;
+      // The counts of each ray on its own add to what was there.
+      OpCounts before;
+      before.rays = 5;
+      before.matvec = 3;
+      std::vector<OpCounts> ray_ops(width);
+      std::vector<PixelSample> out_each(width);
       for (int j = 0; j < ps.camera.height; ++j) {
         tracer.primary_rays(j, rays);
         tracer.shade_primary_row(rays, out, row_scratch, row_ops);
+        std::fill(ray_ops.begin(), ray_ops.end(), before);
+        tracer.shade_primary_row(rays, out_each, row_scratch, ray_ops);
         for (int i = 0; i < width; ++i) {
-          const PixelSample single = tracer.shade_primary(rays[i], single_scratch, single_ops);
+          OpCounts own;
+          const PixelSample single = tracer.shade_primary(rays[i], single_scratch, own);
+          single_ops += own;
           expect_same_sample(out[i], single, i, j);
+          expect_same_sample(out_each[i], single, i, j);
+          OpCounts expected = before;
+          expected += own;
+          ASSERT_EQ(ray_ops[i], expected) << "grid " << grid << " pixel " << i << "," << j;
           (single.primitive >= 0 ? hits : misses) += 1;
         }
         ASSERT_EQ(row_ops, single_ops) << "grid " << grid << " row " << j;
