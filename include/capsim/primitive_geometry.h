@@ -114,21 +114,27 @@ void revolution_crossings(const PreparedPrimitive& p, const Ray& world_ray, std:
 void leaf_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vector<LineCrossing>& out,
                     std::vector<LineCrossing>& work, OpCounts& ops);
 
-// The primitive's outward unit normal, in world space, at a world point on surface s.
+// The primitive's outward unit normal, in world space, at a world point on
+// surface s; adds world_normal_matvecs(p, s) to ops.matvec.
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
                         OpCounts& ops);
 
 // The matrix-vector products world_normal(p, point, s, ops) counts in ops.matvec
-// (the same at every point of surface s).
+// (the same at every point of surface s): the machine's cost of a normal.
 std::uint64_t world_normal_matvecs(const PreparedPrimitive& p, SurfaceId s);
 
 // world_normal of a round sphere about `center`, to the bit: the same normal
-// as through the matrices, with the same count (the simulated machine does
-// the general work).
+// as through the matrices, uncounted.
+inline glm::dvec3 round_sphere_unit_normal(const glm::dvec3& center, const glm::dvec3& world_point) {
+  return glm::normalize(world_point - center);
+}
+// The same with world_normal's count for a round sphere (the simulated
+// machine does the general work), for callers that hold its centre but not
+// its primitive.
 inline constexpr std::uint64_t kRoundSphereNormalMatvecs = 2;
 inline glm::dvec3 round_sphere_normal(const glm::dvec3& center, const glm::dvec3& world_point, OpCounts& ops) {
   ops.matvec += kRoundSphereNormalMatvecs;
-  return glm::normalize(world_point - center);
+  return round_sphere_unit_normal(center, world_point);
 }
 
 }  // namespace capsim

@@ -217,6 +217,9 @@ void leaf_crossings(const PreparedPrimitive& p, const Ray& world_ray, std::vecto
 }
 
 std::uint64_t world_normal_matvecs(const PreparedPrimitive& p, SurfaceId s) {
+  // Into the primitive's space (a transformed sphere, a cone's side, a
+  // revolution) and back out with the normal matrix (all): a round sphere is
+  // counted as the transformed one, the work the machine does.
   switch (p.kind) {
     case PrimitiveKind::Sphere: return p.round_sphere ? kRoundSphereNormalMatvecs : 2;
     case PrimitiveKind::Box: return 1;
@@ -229,11 +232,13 @@ std::uint64_t world_normal_matvecs(const PreparedPrimitive& p, SurfaceId s) {
 
 glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_point, SurfaceId s,
                         OpCounts& ops) {
+  // The machine's count, from the one table of it, whichever way the normal
+  // is worked out below.
+  ops.matvec += world_normal_matvecs(p, s);
   glm::dvec3 n{0, 0, 1};
   switch (p.kind) {
     case PrimitiveKind::Sphere:
-      if (p.round_sphere) return round_sphere_normal(p.center, world_point, ops);
-      ++ops.matvec;
+      if (p.round_sphere) return round_sphere_unit_normal(p.center, world_point);
       n = transform_point(p.to_object, world_point);
       break;
     case PrimitiveKind::Box: {
@@ -248,7 +253,6 @@ glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_poin
       } else if (s == 2) {
         n = {0, 0, 1};
       } else {
-        ++ops.matvec;
         const glm::dvec3 q = transform_point(p.to_object, world_point);
         const double k = p.cone_r2 - p.cone_r1;
         n = {q.x, q.y, -k * (p.cone_r1 + k * q.z)};
@@ -260,11 +264,9 @@ glm::dvec3 world_normal(const PreparedPrimitive& p, const glm::dvec3& world_poin
       n = p.mesh->face_normals[static_cast<std::size_t>(s)];
       break;
     case PrimitiveKind::Revolution:
-      ++ops.matvec;
       n = revolution_normal(*p.revolution, transform_point(p.to_object, world_point), s);
       break;
   }
-  ++ops.matvec;
   return glm::normalize(p.normal_to_world * n);
 }
 
