@@ -147,10 +147,14 @@ class Tracer {
  private:
   // first_hit's walk; kMayBeCrowded: some voxel holds so many primitives that
   // their crossings are merged into the pending ones at once (tracer.cpp).
-  // kFindsHit: fill the hit's distance, primitive, surface and side, leaving
-  // its point and normal to complete_hit (first_hit), or only count the work
-  // of all of it (any_hit).
-  template <bool kMayBeCrowded, bool kFindsHit>
+  // kWork: what the walk does at the visible crossing.
+  enum class HitWork {
+    kCount,     // count the hit's point and normal, work nothing out (any_hit)
+    kFind,      // fill the hit's distance, primitive, surface and side, and
+                // leave its point and normal to complete_hit (a row's pass)
+    kComplete,  // fill the whole hit (first_hit)
+  };
+  template <bool kMayBeCrowded, HitWork kWork>
   bool walk(const Ray& ray, Scratch& scratch, OpCounts& ops, Hit& hit) const;
   // The point and the solid's normal of a hit the walk found along `ray`.
   void complete_hit(const Ray& ray, Hit& hit, OpCounts& ops) const;

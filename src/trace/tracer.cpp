@@ -315,6 +315,24 @@ double scene_epsilon(const PreparedScene& s) {
   return 1e-7 * glm::length(s.grid.universe.extent());
 }
 
+// Tracer::complete_hit: the point and the solid's normal of a hit the walk
+// found along `ray`. Always inlined: at the end of first_hit's walk it is
+// what the normal's chain of operations starts from.
+[[gnu::always_inline]] inline void complete(const Ray& ray, Hit& hit, const std::vector<RoundSphereSlot>& spheres,
+                                            const std::vector<PreparedPrimitive>& prims, OpCounts& ops) {
+  hit.point = ray.at(hit.t);
+  // A round sphere's normal comes from the packed slot the walk reads
+  // already, not from the primitive's record.
+  const RoundSphereSlot& sphere = spheres[hit.primitive];
+  const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere.center, hit.point, ops)
+                                      : world_normal(prims[hit.primitive], hit.point, hit.surface, ops);
+  // The primitive's outward normal, turned to be the solid's: against the
+  // ray where the ray enters the solid, along it where it leaves (surfaces
+  // that a subtracted primitive contributes face the other way).
+  const bool against = glm::dot(n, ray.dir) < 0;
+  hit.normal = (against == hit.entering) ? n : -n;
+}
+
 }  // namespace
 
 Tracer::Scratch::Scratch(const PreparedScene& scene)
@@ -430,18 +448,22 @@ Ray Tracer::ray_through(double px, double py) const {
   return r;
 }
 
+void Tracer::complete_hit(const Ray& ray, Hit& hit, OpCounts& ops) const {
+  complete(ray, hit, spheres_, scene_.prims, ops);
+}
+
 bool Tracer::first_hit(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
-  const bool found = crowded_voxels_ ? walk<true, true>(ray, s, ops, hit) : walk<false, true>(ray, s, ops, hit);
-  if (found) complete_hit(ray, hit, ops);
-  return found;
+  return crowded_voxels_ ? walk<true, HitWork::kComplete>(ray, s, ops, hit)
+                         : walk<false, HitWork::kComplete>(ray, s, ops, hit);
 }
 
 bool Tracer::any_hit(const Ray& ray, Scratch& s, OpCounts& ops) const {
   Hit unused;
-  return crowded_voxels_ ? walk<true, false>(ray, s, ops, unused) : walk<false, false>(ray, s, ops, unused);
+  return crowded_voxels_ ? walk<true, HitWork::kCount>(ray, s, ops, unused)
+                         : walk<false, HitWork::kCount>(ray, s, ops, unused);
 }
 
-template <bool kMayBeCrowded, bool kFindsHit>
+template <bool kMayBeCrowded, Tracer::HitWork kWork>
 bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
   const VoxelGrid& grid = scene_.grid;
   if (++s.stamp == 0) {
@@ -481,7 +503,7 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
       const SurfaceId surface = s.pending.back().surface;
       s.pending.pop_back();
       if (!s.tree.toggle(primitive, ops)) continue;
-      if constexpr (!kFindsHit) {
+      if constexpr (kWork == HitWork::kCount) {
         ops.matvec += spheres_[primitive].r2 >= 0 ? kRoundSphereNormalMatvecs
                                                   : world_normal_matvecs(scene_.prims[primitive], surface);
         return true;
@@ -490,25 +512,12 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
       hit.primitive = primitive;
       hit.surface = surface;
       hit.entering = s.tree.root_inside();
+      if constexpr (kWork == HitWork::kComplete) complete(ray, hit, spheres_, scene_.prims, ops);
       return true;
     }
     if (!dda.step()) return false;
     ++ops.dda_steps;
   } while (true);
-}
-
-void Tracer::complete_hit(const Ray& ray, Hit& hit, OpCounts& ops) const {
-  hit.point = ray.at(hit.t);
-  // A round sphere's normal comes from the packed slot the walk reads
-  // already, not from the primitive's record.
-  const RoundSphereSlot& sphere = spheres_[hit.primitive];
-  const glm::dvec3 n = sphere.r2 >= 0 ? round_sphere_normal(sphere.center, hit.point, ops)
-                                      : world_normal(scene_.prims[hit.primitive], hit.point, hit.surface, ops);
-  // The primitive's outward normal, turned to be the solid's: against the
-  // ray where the ray enters the solid, along it where it leaves (surfaces
-  // that a subtracted primitive contributes face the other way).
-  const bool against = glm::dot(n, ray.dir) < 0;
-  hit.normal = (against == hit.entering) ? n : -n;
 }
 
 bool Tracer::occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
@@ -611,8 +620,8 @@ void Tracer::shade_row(std::span<const Ray> rays, std::span<PixelSample> out, Sc
     PixelSample& s = out[i];
     s = PixelSample{};
     Hit& h = hits[i];
-    const bool found = crowded_voxels_ ? walk<true, true>(rays[i], scratch, ops, h)
-                                       : walk<false, true>(rays[i], scratch, ops, h);
+    const bool found = crowded_voxels_ ? walk<true, HitWork::kFind>(rays[i], scratch, ops, h)
+                                       : walk<false, HitWork::kFind>(rays[i], scratch, ops, h);
     if (!found) continue;
     s.alpha = 1;
     s.depth = h.t;
