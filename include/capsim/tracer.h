@@ -177,7 +177,10 @@ class Tracer {
   void table_rays(unsigned parity, int row, std::span<Ray> rays) const;
   double screen_x(double u) const;  // screen_ray's offsets of screen point (u, v)
   double screen_y(double v) const;
-  bool occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
+  // Whether a surface lies on the segment from `from` along the unit
+  // direction `dir` for `dist` (a shadow ray to a light that far away; shade
+  // has the direction and the distance already); counts one shadow ray.
+  bool occluded(const glm::dvec3& from, const glm::dvec3& dir, double dist, Scratch& scratch,
                 OpCounts& ops) const;
 
   const PreparedScene& scene_;

@@ -520,11 +520,9 @@ bool Tracer::walk(const Ray& ray, Scratch& s, OpCounts& ops, Hit& hit) const {
   } while (true);
 }
 
-bool Tracer::occluded(const glm::dvec3& from, const glm::dvec3& to, Scratch& scratch,
+bool Tracer::occluded(const glm::dvec3& from, const glm::dvec3& dir, double dist, Scratch& scratch,
                       OpCounts& ops) const {
-  const glm::dvec3 d = to - from;
-  const double dist = glm::length(d);
-  Ray r{from, d / dist, epsilon_, dist - epsilon_};
+  Ray r{from, dir, epsilon_, dist - epsilon_};
   ++ops.rays;
   ++ops.shadow_rays;
   return any_hit(r, scratch, ops);
@@ -558,7 +556,7 @@ glm::dvec3 Tracer::shade_hit(const Ray& ray, const Hit& h, int depth, Scratch& s
     const glm::dvec3 l = to_light / dist;
     const double ndl = glm::dot(facing, l);
     if (ndl <= 0) continue;
-    if (!options_.primary_only && occluded(h.point, light.position, scratch, ops)) continue;
+    if (!options_.primary_only && occluded(h.point, l, dist, scratch, ops)) continue;
     const glm::dvec3 r = glm::reflect(-l, facing);
     const double spec = highlight_power(std::max(0.0, glm::dot(r, view)), m.shininess);
     local += light.color * (m.diffuse * ndl * prim.color + m.specular * spec);
