@@ -189,32 +189,18 @@ struct PackedRow {
   OpCounts at(std::size_t x) const { return ops.at(first + x); }
 };
 
-// A row's rays and their operation counts, one a ray.
-struct RowCostWorkspace : RowWorkspace {
-  RowCostWorkspace(const Tracer& tracer, int rays) : RowWorkspace(tracer, rays), ops(static_cast<std::size_t>(rays)) {}
-  std::vector<OpCounts> ops;
-};
-
-// A row of pixels traced together (Tracer::shade_primary_row): their rays,
-// samples and operation counts.
-struct PixelRowWorkspace : RowCostWorkspace {
-  PixelRowWorkspace(const Tracer& tracer, int rays) : RowCostWorkspace(tracer, rays), samples(ops.size()) {}
-  std::vector<PixelSample> samples;
-};
-
 // Where trace_cells' samples and operations come from: the tracer, tracing
 // them now, or a screen it traced ahead (ScreenTrace), which holds the same
 // samples and counts. Either gives the same cells to the bit.
 struct TracingNow {
   const Tracer& tracer;
   // Row y's pixels: trace them all into w (its rays' count is the row's width).
-  void row(int y, PixelRowWorkspace& w) const {
+  void row(int y, ShadedRowWorkspace& w) const {
     tracer.primary_rays(y, w.rays);
-    std::fill(w.ops.begin(), w.ops.end(), OpCounts{});
-    tracer.shade_primary_row(w.rays, w.samples, w.scratch, w.ops);
+    w.shade(tracer, w.samples);
   }
   // Pixel (x, y) of the row traced last into w; its operations are added to ops.
-  PixelSample pixel(const PixelRowWorkspace& w, int x, int, OpCounts& ops) const {
+  PixelSample pixel(const ShadedRowWorkspace& w, int x, int, OpCounts& ops) const {
     ops += w.ops[static_cast<std::size_t>(x)];
     return w.samples[static_cast<std::size_t>(x)];
   }
@@ -234,8 +220,8 @@ struct TracingNow {
 struct TracedAhead {
   const ScreenTrace& screen;
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * screen.width + x; }
-  void row(int, PixelRowWorkspace&) const {}
-  PixelSample pixel(const PixelRowWorkspace&, int x, int y, OpCounts& ops) const {
+  void row(int, ShadedRowWorkspace&) const {}
+  PixelSample pixel(const ShadedRowWorkspace&, int x, int y, OpCounts& ops) const {
     screen.pixel_ops.add_to(at(x, y), ops);
     return screen.pixels[at(x, y)];
   }
@@ -390,10 +376,10 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
   // them (neighbouring rays share voxels and primitives in the caches), and each
   // sample goes to the video-memory slot of the cell whose window shows it.
   tbb::enumerable_thread_specific<Sums> sums([&] { return Sums(layout, chunk_pixels); });
-  tbb::enumerable_thread_specific<PixelRowWorkspace> workspaces(
-      [&] { return PixelRowWorkspace(tracer, source.row_rays(layout.width())); });
+  tbb::enumerable_thread_specific<ShadedRowWorkspace> workspaces(
+      [&] { return ShadedRowWorkspace(tracer, source.row_rays(layout.width())); });
   parallel_rows(threads, layout.height(), [&](const tbb::blocked_range<int>& rows) {
-    PixelRowWorkspace& w = workspaces.local();
+    ShadedRowWorkspace& w = workspaces.local();
     Sums& sum = sums.local();
     for (int y = rows.begin(); y != rows.end(); ++y) {
       source.row(y, w);
@@ -477,16 +463,15 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
   // Antialiased pixels trace from the corners; only unantialiased rows are
   // made as rows of rays, and shaded as rows.
   const int row_rays = aa.depth == 0 ? cam.width : 0;
-  tbb::enumerable_thread_specific<RowCostWorkspace> workspaces([&] { return RowCostWorkspace(tracer, row_rays); });
+  tbb::enumerable_thread_specific<ShadedRowWorkspace> workspaces([&] { return ShadedRowWorkspace(tracer, row_rays); });
   parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
-    RowCostWorkspace& w = workspaces.local();
+    ShadedRowWorkspace& w = workspaces.local();
     Tracer::Scratch& s = w.scratch;
     for (int y = rows.begin(); y != rows.end(); ++y) {
       const std::size_t first = static_cast<std::size_t>(y) * cam.width;
       if (aa.depth == 0) {
         tracer.primary_rays(y, w.rays);
-        std::fill(w.ops.begin(), w.ops.end(), OpCounts{});
-        tracer.shade_primary_row(w.rays, std::span<PixelSample>(t.pixels).subspan(first, w.rays.size()), s, w.ops);
+        w.shade(tracer, std::span<PixelSample>(t.pixels).subspan(first, w.rays.size()));
         for (std::size_t x = 0; x < w.ops.size(); ++x) t.pixel_ops.set(first + x, w.ops[x]);
         continue;
       }

@@ -7,6 +7,7 @@
 #include "capsim/progress.h"
 #include "capsim/tracer.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -28,6 +29,23 @@ struct RowWorkspace {
   RowWorkspace(const Tracer& tracer, int rays) : scratch(tracer.scene()), rays(static_cast<std::size_t>(rays)) {}
   Tracer::Scratch scratch;
   std::vector<Ray> rays;
+};
+
+// A RowWorkspace whose rays are shaded as one row (Tracer::shade_primary_row),
+// each ray's operation counts kept on their own: room for the row's samples
+// and counts.
+struct ShadedRowWorkspace : RowWorkspace {
+  ShadedRowWorkspace(const Tracer& tracer, int rays)
+      : RowWorkspace(tracer, rays), samples(static_cast<std::size_t>(rays)), ops(static_cast<std::size_t>(rays)) {}
+  // Shades the rays made last into out (samples, or a row of the caller's),
+  // ops[i] counting ray i's operations from zero.
+  // Precondition: out.size() == rays.size().
+  void shade(const Tracer& tracer, std::span<PixelSample> out) {
+    std::fill(ops.begin(), ops.end(), OpCounts{});
+    tracer.shade_primary_row(rays, out, scratch, ops);
+  }
+  std::vector<PixelSample> samples;
+  std::vector<OpCounts> ops;
 };
 
 struct RenderStats {

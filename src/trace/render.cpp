@@ -3,8 +3,6 @@
 #include "capsim/host_threads.h"
 #include "capsim/srgb.h"
 
-#include <algorithm>
-
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 
@@ -37,13 +35,6 @@ struct PixelRowWorkspace : RowWorkspace {
   std::vector<PixelSample> row;
 };
 
-// A row of corners' samples and costs, beside their rays.
-struct CornerRowWorkspace : RowWorkspace {
-  CornerRowWorkspace(const Tracer& tracer, int corners)
-      : RowWorkspace(tracer, corners), samples(corners), row(corners) {}
-  std::vector<PixelSample> samples;
-  std::vector<OpCounts> row;
-};
 
 }  // namespace
 
@@ -59,19 +50,18 @@ CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostS
   corners.width = cam.width;
   corners.height = cam.height;
   corners.samples.resize(static_cast<std::size_t>(cam.width + 1) * (cam.height + 1));
-  tbb::enumerable_thread_specific<CornerRowWorkspace> workspaces(
-      [&] { return CornerRowWorkspace(tracer, cam.width + 1); });
+  tbb::enumerable_thread_specific<ShadedRowWorkspace> workspaces(
+      [&] { return ShadedRowWorkspace(tracer, cam.width + 1); });
   parallel_rows(threads, cam.height + 1, [&](const tbb::blocked_range<int>& rows) {
-    CornerRowWorkspace& w = workspaces.local();
+    ShadedRowWorkspace& w = workspaces.local();
     for (int y = rows.begin(); y != rows.end(); ++y) {
       // trace_screen_sample(tracer, x, y, scratch, ops) for the row's corners,
       // from the rays made already
       tracer.corner_rays(y, w.rays);
-      std::fill(w.row.begin(), w.row.end(), OpCounts{});
-      tracer.shade_primary_row(w.rays, w.samples, w.scratch, w.row);
+      w.shade(tracer, w.samples);
       for (int x = 0; x <= cam.width; ++x)
         corners.samples[corners.index(x, y)] = ScreenSample::from(w.samples[static_cast<std::size_t>(x)]);
-      cost(y, w.row);
+      cost(y, w.ops);
     }
     if (progress) progress->advance(static_cast<std::uint64_t>(rows.size()) * (cam.width + 1));
   });
