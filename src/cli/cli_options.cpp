@@ -4,6 +4,7 @@
 #include "capsim/memory_limit.h"
 #include "capsim/parser.h"
 #include "cli/cli_usage.h"
+#include "cli/console.h"
 #include "cli/scad_export.h"
 
 #include <fmt/core.h>
@@ -211,8 +212,9 @@ void check_memory(const TracerSettings& s, ImageSize size, const MemoryNeed& nee
 
 }  // namespace
 
-std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need) {
+std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need, StageTimes* times) {
   std::vector<Scene> scenes = read_scenes(s);
+  if (times) times->end("read");
   // Every frame takes the first one's size: --size, or the first camera's.
   const ImageSize size = image_size(scenes[0], s.prepare);
   check_memory(s, size, need, static_cast<int>(scenes.size()));
@@ -224,6 +226,7 @@ std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed
   prepared.reserve(scenes.size());
   for (Scene& scene : scenes) prepared.push_back(prepare_scene(std::move(scene), prepare));
   frame_sequence(prepared);
+  if (times) times->end("prepare");
   return prepared;
 }
 

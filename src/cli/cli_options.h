@@ -17,6 +17,8 @@
 
 namespace capsim::cli {
 
+class StageTimes;  // console.h
+
 // --threads accepts 0 to this; more than the host's hardware threads run as
 // many as it has (see host_arena_concurrency).
 inline constexpr int kMaxThreadsOption = 1024;
@@ -94,8 +96,10 @@ TracerSettings check_tracer_options(const TracerOptions& o);
 // would need more memory than --max-memory or, by default, the process's
 // limits. Several files, or --frames, are the frames of one sequence: every
 // frame gets the first one's image size, and frames without a camera statement
-// share the camera that frames all of them (frame_sequence).
-std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need);
+// share the camera that frames all of them (frame_sequence). `times`, if
+// given, ends its stages "read" and "prepare".
+std::vector<PreparedScene> load_scenes(const TracerSettings& s, const MemoryNeed& need,
+                                       StageTimes* times = nullptr);
 
 // With --verbose, the camera of each frame on stderr as OpenSCAD options
 // ("camera: --camera=... --projection=..."): once when all frames share it.

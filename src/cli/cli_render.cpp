@@ -7,6 +7,7 @@
 #include "cli/cli_outputs.h"
 #include "cli/console.h"
 
+#include <cstdio>
 #include <memory>
 #include <vector>
 
@@ -18,7 +19,13 @@ Command add_render_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Render a CSG scene file with the paper's tracer");
   add_tracer_options(*cmd, *opts);
   add_quiet_flag(*cmd, *quiet, "");  // render prints no summary: --quiet drops the percentage on a terminal
-  return [opts, quiet] {
+  auto timings = std::make_shared<bool>(false);
+  accepts(cmd->add_flag("--timings", *timings,
+                        "Print on stderr at the end the wall time of each stage: read (the scene, with OpenSCAD's "
+                        "export of a .scad), prepare (voxel grids and status trees), trace, write (docs/performance.md)"),
+          flag_values());
+  return [opts, quiet, timings] {
+    StageTimes times;
     const TracerSettings settings = check_tracer_options(*opts);
     const int frames = settings.frames;
     const bool numbered = settings.numbered_outputs();
@@ -38,7 +45,7 @@ Command add_render_command(CLI::App& app) {
         return corners + PngScanlines::bytes(size.width, size.height) + write_png_memory(size.width, size.height);
       return corners + Framebuffer::bytes(size.width, size.height) + (aa.depth > 0 ? pixels * sizeof(float) : 0) +
              write_image_memory(".exr", size.width, size.height, aa.depth > 0 ? 1 : 0);
-    });
+    }, &times);
     print_cameras(settings, scenes);
     const int width = scenes[0].camera.width, height = scenes[0].camera.height;
     Progress progress(frames == 1 ? "rendering" : "frames", frames == 1 ? render_work(width, height, aa) : frames,
@@ -58,9 +65,12 @@ Command add_render_command(CLI::App& app) {
               image.filter_row(j);
             },
             nullptr, rows, aa);
+        times.end("trace");
         write_png(out, image, settings.threads);
       } else if (aa.depth == 0) {
-        write_image(out, render(tracer, settings.threads, nullptr, rows));
+        const Framebuffer fb = render(tracer, settings.threads, nullptr, rows);
+        times.end("trace");
+        write_image(out, fb);
       } else {
         // Antialiased EXR: also the samples traced for each pixel.
         Framebuffer fb(width, height);
@@ -74,11 +84,15 @@ Command add_render_command(CLI::App& app) {
               }
             },
             nullptr, rows, aa);
+        times.end("trace");
         write_image(out, fb, {samples});
       }
+      times.end("write");
       if (frames > 1) progress.advance(1);
     }
     outputs.commit();
+    times.end("write");
+    if (*timings) std::fputs(times.line().c_str(), stderr);
     return 0;
   };
 }

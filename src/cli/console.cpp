@@ -59,4 +59,27 @@ void ElapsedLog::operator()(const std::string& what) const {
   console_->progress(fmt::format("[{:7.1f} s] {}\n", seconds(), what));
 }
 
+void StageTimes::end(std::string_view stage) {
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - last_).count();
+  last_ = now;
+  for (auto& [name, total] : stages_) {
+    if (name == stage) {
+      total += ms;
+      return;
+    }
+  }
+  stages_.emplace_back(stage, ms);
+}
+
+std::string StageTimes::line() const {
+  std::string out = "timings (wall clock):";
+  double sum = 0;
+  for (std::size_t k = 0; k < stages_.size(); ++k) {
+    out += fmt::format("{} {} {:.1f} ms", k == 0 ? "" : ",", stages_[k].first, stages_[k].second);
+    sum += stages_[k].second;
+  }
+  return out + fmt::format("; {:.1f} ms in all\n", sum);
+}
+
 }  // namespace capsim::cli

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <regex>
 
 using namespace capsim::testing;
 
@@ -99,6 +100,35 @@ TEST(CliRender, ThreadCountNeverChangesTheBytes) {
   EXPECT_TRUE(read_file(dir / "t1.png") == read_file(dir / "t0.png"));
 }
 
+// --timings: one line on stderr at the end, each stage once in the order it
+// ran (a sequence's frames add to their stages), and the same image.
+TEST(CliRender, TimingsNameEachStageOnceAndChangeNoByte) {
+  TempDir dir;
+  const std::string scene = scene_path("balls.csg");
+  const std::regex line(
+      R"(timings \(wall clock\): read \d+\.\d ms, prepare \d+\.\d ms, trace \d+\.\d ms, write \d+\.\d ms; )"
+      R"(\d+\.\d ms in all\n)");
+  for (const char* extra : {"", " --quiet", " --frames 2", " --aa 1 --quiet"}) {
+    const std::string ext = std::string(extra).find("--aa") != std::string::npos ? ".exr" : ".png";
+    const RunResult plain =
+        run_capsim("render " + scene + " -o " + (dir / ("a" + ext)) + " --size 24x16" + extra, dir);
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    EXPECT_EQ(plain.err.find("timings"), std::string::npos) << extra;
+    const RunResult timed =
+        run_capsim("render " + scene + " -o " + (dir / ("b" + ext)) + " --size 24x16 --timings" + extra, dir);
+    ASSERT_EQ(timed.status, 0) << timed.err;
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(timed.err, m, line)) << extra << ": " << timed.err;
+    EXPECT_EQ(m.suffix().str(), "") << "the line ends the run's output";
+    if (std::string(extra) == " --frames 2") {
+      EXPECT_TRUE(read_file(dir / "a00000.png") == read_file(dir / "b00000.png"));
+      EXPECT_TRUE(read_file(dir / "a00001.png") == read_file(dir / "b00001.png"));
+    } else {
+      EXPECT_TRUE(read_file(dir / ("a" + ext)) == read_file(dir / ("b" + ext))) << extra;
+    }
+  }
+}
+
 TEST(CliRender, PrimaryOnlyDropsShadowsAndSecondaryRays) {
   TempDir dir;
   const std::string scene = scene_path("balls.csg");
@@ -180,6 +210,6 @@ TEST(CliRender, HelpDescribesEveryOption) {
   TempDir dir;
   const RunResult r = run_capsim("render --help", dir);
   EXPECT_EQ(r.status, 0);
-  for (const char* opt : {"--output", "--size", "--grid", "--threads", "--primary-only"})
+  for (const char* opt : {"--output", "--size", "--grid", "--threads", "--primary-only", "--timings"})
     EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
 }
