@@ -294,6 +294,13 @@ void traverse(const SphereFilter& f, const Ray& ray, double margin, Visit visit)
   merge_fresh(s.pending, s.fresh);
 }
 
+// What a primary sample keeps of the surface its ray sees, besides the colour.
+void record_visible(const Hit& h, PixelSample& s) {
+  s.alpha = 1;
+  s.depth = h.t;
+  s.primitive = static_cast<int>(h.primitive);
+}
+
 // x^e for the Phong highlight. Whole exponents (as materials usually give) go by
 // repeated squaring, a few multiplications where pow() costs some seventy
 // instructions per light per hit; others fall back to pow().
@@ -533,11 +540,7 @@ glm::dvec3 Tracer::shade(const Ray& ray, int depth, Scratch& scratch, OpCounts& 
   ++ops.rays;
   Hit h;
   if (!first_hit(ray, scratch, ops, h)) return scene_.scene.background;
-  if (primary) {
-    primary->alpha = 1;
-    primary->depth = h.t;
-    primary->primitive = static_cast<int>(h.primitive);
-  }
+  if (primary) record_visible(h, *primary);
   return shade_hit(ray, h, depth, scratch, ops);
 }
 
@@ -620,10 +623,7 @@ void Tracer::shade_row(std::span<const Ray> rays, std::span<PixelSample> out, Sc
     Hit& h = hits[i];
     const bool found = crowded_voxels_ ? walk<true, HitWork::kFind>(rays[i], scratch, ops, h)
                                        : walk<false, HitWork::kFind>(rays[i], scratch, ops, h);
-    if (!found) continue;
-    s.alpha = 1;
-    s.depth = h.t;
-    s.primitive = static_cast<int>(h.primitive);
+    if (found) record_visible(h, s);
   }
   for (std::size_t i = 0; i < rays.size(); ++i)
     if (out[i].primitive >= 0) complete_hit(rays[i], hits[i], ops_of(i));
