@@ -1,6 +1,6 @@
 #include "cli/cli_outputs.h"
 
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>
 

@@ -1,7 +1,7 @@
 #include "cli/command_failure.h"
 
 #include "capsim/scene.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>
 

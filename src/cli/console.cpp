@@ -1,7 +1,7 @@
 #include "cli/console.h"
 
 #include "capsim/progress.h"
-#include "cli/cli_options.h"
+#include "cli/options/cli_options.h"
 
 #include <fmt/core.h>
 

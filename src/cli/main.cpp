@@ -1,9 +1,9 @@
 // capsim: the Cellular Array Processor ray-tracing simulator.
 
 #include "capsim/temp_file_registry.h"
-#include "cli/cli_commands.h"
+#include "cli/commands/cli_commands.h"
 #include "cli/command_failure.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>
 #include <malloc.h>

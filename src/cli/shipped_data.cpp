@@ -1,7 +1,7 @@
 #include "cli/shipped_data.h"
 
-#include "cli/cli_options.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_options.h"
+#include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>
 #include <fmt/format.h>

@@ -14,7 +14,7 @@
 //
 // An explicit --scenes DIR or --baseline FILE is used as given instead.
 
-#include "cli/option_checks.h"
+#include "cli/options/option_checks.h"
 
 #include <filesystem>
 #include <optional>

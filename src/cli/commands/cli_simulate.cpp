@@ -2,10 +2,10 @@
 // operation's cost in integer cycles of the cell's clock inside an
 // event-driven machine.
 
-#include "cli/cli_commands.h"
-#include "cli/cli_options.h"
+#include "cli/commands/cli_commands.h"
+#include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 #include "cli/console.h"
 #include "machine/machine.h"
 #include "paper/simulate_command.h"

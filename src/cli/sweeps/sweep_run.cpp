@@ -1,7 +1,7 @@
-#include "cli/sweep_run.h"
+#include "cli/sweeps/sweep_run.h"
 
 #include "capsim/tracer.h"
-#include "cli/cli_options.h"
+#include "cli/options/cli_options.h"
 
 #include <memory>
 

@@ -4,7 +4,7 @@
 // --viewall, --autocenter, --projection and --imgsize.
 
 #include "capsim/openscad_camera.h"
-#include "cli/option_checks.h"
+#include "cli/options/option_checks.h"
 
 #include <CLI/CLI.hpp>
 

@@ -2,8 +2,8 @@
 
 #include "capsim/image_io.h"
 #include "capsim/render.h"
-#include "cli/cli_commands.h"
-#include "cli/cli_options.h"
+#include "cli/commands/cli_commands.h"
+#include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/console.h"
 

@@ -1,6 +1,6 @@
-#include "cli/option_checks.h"
+#include "cli/options/option_checks.h"
 
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>
 

@@ -1,9 +1,9 @@
-#include "cli/cli_options.h"
+#include "cli/options/cli_options.h"
 
 #include "capsim/image_io.h"
 #include "capsim/memory_limit.h"
 #include "capsim/parser.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 #include "cli/console.h"
 #include "cli/scad_export.h"
 

@@ -1,8 +1,8 @@
-#include "cli/openscad_options.h"
+#include "cli/options/openscad_options.h"
 
 #include "capsim/prepared_scene.h"
-#include "cli/cli_options.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_options.h"
+#include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>
 

@@ -1,8 +1,8 @@
 // `capsim lattice`: writes a sphere lattice of the paper's Table 4-2 as a scene file.
 
 #include "capsim/prepared_scene.h"
-#include "cli/cli_commands.h"
-#include "cli/cli_options.h"
+#include "cli/commands/cli_commands.h"
+#include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/console.h"
 #include "paper/lattice_scene.h"

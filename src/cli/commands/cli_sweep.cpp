@@ -3,14 +3,14 @@
 // and, under mpirun, shared among the ranks (sweep_ranks.h), into one CSV and
 // one JSON file and a page of plots (PREFIX.html), resumable from that JSON.
 
-#include "cli/cli_commands.h"
-#include "cli/cli_options.h"
+#include "cli/commands/cli_commands.h"
+#include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 #include "cli/command_failure.h"
 #include "cli/console.h"
-#include "cli/sweep_ranks.h"
-#include "cli/sweep_run.h"
+#include "cli/sweeps/sweep_ranks.h"
+#include "cli/sweeps/sweep_run.h"
 #include "paper/sweep_page.h"
 #include "paper/sweep_records.h"
 #include "report/text_output.h"

@@ -5,8 +5,8 @@
 #include "capsim/antialias.h"
 #include "capsim/prepared_scene.h"
 #include "capsim/tracer.h"
-#include "cli/openscad_options.h"
-#include "cli/option_checks.h"
+#include "cli/options/openscad_options.h"
+#include "cli/options/option_checks.h"
 
 #include <CLI/CLI.hpp>
 

@@ -3,8 +3,8 @@
 // default; the project's own is docs/reproduction.md) with its plots.
 
 #include "capsim/prepared_scene.h"
-#include "cli/cli_commands.h"
-#include "cli/cli_options.h"
+#include "cli/commands/cli_commands.h"
+#include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/console.h"
 #include "cli/shipped_data.h"

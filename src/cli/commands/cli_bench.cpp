@@ -3,10 +3,10 @@
 // shipped one for the screen (shipped_data.h), or none.
 
 #include "capsim/prepared_scene.h"
-#include "cli/cli_commands.h"
-#include "cli/cli_options.h"
+#include "cli/commands/cli_commands.h"
+#include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"
-#include "cli/cli_usage.h"
+#include "cli/options/cli_usage.h"
 #include "cli/shipped_data.h"
 #include "cli/console.h"
 #include "paper/modes_bench.h"

@@ -3,8 +3,8 @@
 // profiles; with --alternatives, the same for every alternative assumption,
 // as a Markdown table of their errors.
 
-#include "cli/cli_commands.h"
-#include "cli/cli_options.h"
+#include "cli/commands/cli_commands.h"
+#include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"
 #include "cli/console.h"
 #include "cli/shipped_data.h"

@@ -1,4 +1,4 @@
-#include "cli/sweep_ranks.h"
+#include "cli/sweeps/sweep_ranks.h"
 
 #ifdef CAPSIM_WITH_MPI
 #include <mpi.h>
