@@ -1,6 +1,6 @@
 #include "paper/lattice_scene.h"
 
-#include "paper/paper_figures.h"
+#include "paper/repro/paper_figures.h"
 
 #include "capsim/parser.h"
 

@@ -4,7 +4,7 @@
 // run report's styles (report.css) and script (report.js), and what the
 // mode-comparison page of `capsim bench modes` adds to those styles
 // (modes.css) and runs instead of that script (modes.js); a sweep's page of
-// plots (paper/sweep_page.h) takes the same two.
+// plots (paper/sweeps/sweep_page.h) takes the same two.
 
 #include <string_view>
 

@@ -1,7 +1,7 @@
 // What the calibration fits and how a run's time depends on it.
 
-#include "paper/calibration.h"
-#include "paper/paper_figures.h"
+#include "paper/calibration/calibration.h"
+#include "paper/repro/paper_figures.h"
 
 #include <gtest/gtest.h>
 

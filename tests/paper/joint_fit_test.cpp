@@ -1,6 +1,6 @@
 // The joint fit: least squares of ln(ours / paper) over costs >= 0.
 
-#include "paper/joint_fit.h"
+#include "paper/calibration/joint_fit.h"
 
 #include <gtest/gtest.h>
 

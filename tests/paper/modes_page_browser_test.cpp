@@ -2,8 +2,8 @@
 // of runs by the column a fragment names; skipped where Chromium is not
 // installed.
 
-#include "paper/modes_bench.h"
-#include "paper/modes_page.h"
+#include "paper/modes/modes_bench.h"
+#include "paper/modes/modes_page.h"
 #include "support/chromium.h"
 #include "support/cli_run.h"
 #include "support/html_page.h"

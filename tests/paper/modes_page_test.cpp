@@ -4,8 +4,8 @@
 // table; the plots inline SVG; the baseline's verdict in each of its forms;
 // the same bytes for the same figures, whichever the host threads.
 
-#include "paper/modes_bench.h"
-#include "paper/modes_page.h"
+#include "paper/modes/modes_bench.h"
+#include "paper/modes/modes_page.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

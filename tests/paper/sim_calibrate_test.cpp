@@ -2,8 +2,8 @@
 // experiment at the costs the previous fit chose, the best round wins, and
 // the result is deterministic.
 
-#include "paper/calibrate.h"
-#include "paper/calibration.h"
+#include "paper/calibration/calibrate.h"
+#include "paper/calibration/calibration.h"
 #include "machine/costs/builtin_profiles.h"
 
 #include <gtest/gtest.h>

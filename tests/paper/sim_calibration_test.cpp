@@ -4,10 +4,10 @@
 // the calibration fitted as docs/calibration.md states it.
 
 #include "machine/costs/cost_profile.h"
-#include "paper/calibration.h"
+#include "paper/calibration/calibration.h"
 #include "paper/lattice_scene.h"
-#include "paper/paper_figures.h"
-#include "paper/repro.h"
+#include "paper/repro/paper_figures.h"
+#include "paper/repro/repro.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Non-negative least squares, the calibration fit's step.
 
-#include "paper/least_squares.h"
+#include "paper/calibration/least_squares.h"
 
 #include <gtest/gtest.h>
 

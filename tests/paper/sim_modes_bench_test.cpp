@@ -3,7 +3,7 @@
 // fails with a table of old, new and their ratio; --update rewrites the
 // baseline and says what moved.
 
-#include "paper/modes_bench.h"
+#include "paper/modes/modes_bench.h"
 #include "support/cli_run.h"
 
 #include <gtest/gtest.h>

@@ -3,10 +3,10 @@
 // figures of --json, and the commands it prints repeating its runs. The full
 // reproduction is `capsim repro` (docs/reproduction.md).
 
-#include "paper/calibration.h"
-#include "paper/paper_figures.h"
-#include "paper/published_figures.h"
-#include "paper/repro.h"
+#include "paper/calibration/calibration.h"
+#include "paper/repro/paper_figures.h"
+#include "paper/repro/published_figures.h"
+#include "paper/repro/repro.h"
 #include "support/cli_run.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // combination of the other axes the sweep varies, a row per point, nothing
 // from outside the page, and the same bytes from the same records.
 
-#include "paper/sweep_page.h"
-#include "paper/sweep_records.h"
+#include "paper/sweeps/sweep_page.h"
+#include "paper/sweeps/sweep_records.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // A sweep's records: the speed-up against the fewest cells of otherwise equal
 // inputs, a record found again by its inputs, and the CSV's quoting.
 
-#include "paper/sweep_records.h"
+#include "paper/sweeps/sweep_records.h"
 
 #include <gtest/gtest.h>
 

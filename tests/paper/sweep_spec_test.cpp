@@ -2,7 +2,7 @@
 // and the JSON path of the value; the cross product in its fixed order; and
 // frame_average outside dot mode left out.
 
-#include "paper/sweep_spec.h"
+#include "paper/sweeps/sweep_spec.h"
 
 #include <gtest/gtest.h>
 

@@ -9,8 +9,8 @@
 #include "cli/options/cli_usage.h"
 #include "cli/shipped_data.h"
 #include "cli/console.h"
-#include "paper/modes_bench.h"
-#include "paper/modes_page.h"
+#include "paper/modes/modes_bench.h"
+#include "paper/modes/modes_page.h"
 #include "report/text_output.h"
 
 #include <fmt/core.h>

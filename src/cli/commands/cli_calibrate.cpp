@@ -8,8 +8,8 @@
 #include "cli/cli_outputs.h"
 #include "cli/console.h"
 #include "cli/shipped_data.h"
-#include "paper/calibrate.h"
-#include "paper/calibration.h"
+#include "paper/calibration/calibrate.h"
+#include "paper/calibration/calibration.h"
 #include "report/text_output.h"
 
 #include <fmt/core.h>

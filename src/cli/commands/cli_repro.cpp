@@ -8,8 +8,8 @@
 #include "cli/cli_outputs.h"
 #include "cli/console.h"
 #include "cli/shipped_data.h"
-#include "paper/published_figures.h"
-#include "paper/repro.h"
+#include "paper/repro/published_figures.h"
+#include "paper/repro/repro.h"
 #include "report/text_output.h"
 
 #include <fmt/core.h>

@@ -11,8 +11,8 @@
 #include "cli/console.h"
 #include "cli/sweeps/sweep_ranks.h"
 #include "cli/sweeps/sweep_run.h"
-#include "paper/sweep_page.h"
-#include "paper/sweep_records.h"
+#include "paper/sweeps/sweep_page.h"
+#include "paper/sweeps/sweep_records.h"
 #include "report/text_output.h"
 
 #include "capsim/host_threads.h"

@@ -4,7 +4,7 @@
 // and the same machine, without the image files.
 
 #include "machine/machine.h"
-#include "paper/sweep_spec.h"
+#include "paper/sweeps/sweep_spec.h"
 
 namespace capsim::cli {
 

@@ -5,7 +5,7 @@
 // its JSON writes the same bytes as one run whole.
 
 #include "machine/machine.h"
-#include "paper/sweep_spec.h"
+#include "paper/sweeps/sweep_spec.h"
 
 #include <nlohmann/json.hpp>
 

@@ -1,6 +1,6 @@
-#include "paper/sweep_page.h"
+#include "paper/sweeps/sweep_page.h"
 
-#include "paper/sweep_records.h"
+#include "paper/sweeps/sweep_records.h"
 #include "report/html_assets.h"
 #include "report/page_data.h"
 #include "report/svg_plot.h"

@@ -1,8 +1,8 @@
 // docs/reproduction.md and its plots, from a reproduction's results.
 
-#include "paper/paper_figures.h"
-#include "paper/published_figures.h"
-#include "paper/repro.h"
+#include "paper/repro/paper_figures.h"
+#include "paper/repro/published_figures.h"
+#include "paper/repro/repro.h"
 #include "report/svg_plot.h"
 
 #include <fmt/core.h>

@@ -1,4 +1,4 @@
-#include "paper/modes_bench.h"
+#include "paper/modes/modes_bench.h"
 
 #include "report/svg_plot.h"
 

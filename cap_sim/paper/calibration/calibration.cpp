@@ -1,7 +1,7 @@
-#include "paper/calibration.h"
+#include "paper/calibration/calibration.h"
 
 #include "machine/costs/builtin_profiles.h"
-#include "paper/paper_figures.h"
+#include "paper/repro/paper_figures.h"
 
 #include <nlohmann/json.hpp>
 

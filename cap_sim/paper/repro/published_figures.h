@@ -5,8 +5,8 @@
 // times, Table 5-1's 8) and the figures derived from them (d, shares,
 // speed-ups, ratios, optimum divisions), with ours beside each.
 
-#include "paper/joint_fit.h"
-#include "paper/repro.h"
+#include "paper/calibration/joint_fit.h"
+#include "paper/repro/repro.h"
 
 #include <optional>
 #include <string>

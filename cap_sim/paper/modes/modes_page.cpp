@@ -1,4 +1,4 @@
-#include "paper/modes_page.h"
+#include "paper/modes/modes_page.h"
 
 #include "report/html_assets.h"
 #include "report/page_data.h"

@@ -1,7 +1,7 @@
-#include "paper/published_figures.h"
+#include "paper/repro/published_figures.h"
 
-#include "paper/calibration.h"
-#include "paper/paper_figures.h"
+#include "paper/calibration/calibration.h"
+#include "paper/repro/paper_figures.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

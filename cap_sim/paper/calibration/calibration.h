@@ -8,7 +8,7 @@
 // apart, docs/calibration.md).
 
 #include "machine/costs/cost_profile.h"
-#include "paper/joint_fit.h"
+#include "paper/calibration/joint_fit.h"
 
 #include "capsim/op_counts.h"
 

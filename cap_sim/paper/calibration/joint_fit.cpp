@@ -1,6 +1,6 @@
-#include "paper/joint_fit.h"
+#include "paper/calibration/joint_fit.h"
 
-#include "paper/least_squares.h"
+#include "paper/calibration/least_squares.h"
 
 #include <cmath>
 #include <limits>

@@ -1,6 +1,6 @@
-#include "paper/repro.h"
+#include "paper/repro/repro.h"
 
-#include "paper/paper_figures.h"
+#include "paper/repro/paper_figures.h"
 #include "paper/simulate_command.h"
 
 #include "capsim/parser.h"

@@ -1,6 +1,6 @@
-#include "paper/calibrate.h"
+#include "paper/calibration/calibrate.h"
 
-#include "paper/calibration.h"
+#include "paper/calibration/calibration.h"
 
 #include <fmt/core.h>
 

@@ -12,7 +12,7 @@
 // any column. Nothing on it comes from outside the page, and the same bench
 // and outcome give the same bytes.
 
-#include "paper/modes_bench.h"
+#include "paper/modes/modes_bench.h"
 
 #include <string>
 #include <vector>

@@ -1,4 +1,4 @@
-#include "paper/least_squares.h"
+#include "paper/calibration/least_squares.h"
 
 #include <cmath>
 #include <limits>

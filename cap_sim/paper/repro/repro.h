@@ -4,7 +4,7 @@
 // 4-4, 4-5 and 5-1 and Graph 4-3, with the costs the calibration fitted to
 // them (paper/calibrate.h).
 
-#include "paper/calibration.h"
+#include "paper/calibration/calibration.h"
 #include "paper/experiment_run.h"
 
 #include <functional>

@@ -1,4 +1,4 @@
-#include "paper/sweep_spec.h"
+#include "paper/sweeps/sweep_spec.h"
 
 #include "capsim/antialias.h"
 #include "capsim/prepared_scene.h"

@@ -6,8 +6,8 @@
 // model, decide: a Max is a different cell, or a cost rounds to whole cycles,
 // once the costs move.
 
-#include "paper/published_figures.h"
-#include "paper/repro.h"
+#include "paper/repro/published_figures.h"
+#include "paper/repro/repro.h"
 
 #include <functional>
 #include <string>

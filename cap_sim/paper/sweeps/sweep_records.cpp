@@ -1,4 +1,4 @@
-#include "paper/sweep_records.h"
+#include "paper/sweeps/sweep_records.h"
 
 #include "machine/run_figures.h"
 
