@@ -111,4 +111,24 @@ TEST(CliQuiet, RenderOnATerminalShowsNoPercentage) {
   EXPECT_NE(shown.find("rendering: "), std::string::npos) << shown;
 }
 
+// --timings' line comes after the progress's last, on a line of its own.
+TEST(CliQuiet, RenderOnATerminalEndsWithTheTimings) {
+  if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give a terminal";
+  TempDir dir;
+  const std::string command = std::string(CAPSIM_EXE) + " render " + scene_path("chess.csg") +
+                              " --size 4096x4096 --threads 1 --timings -o " + (dir / "c.png");
+  const auto started = std::chrono::steady_clock::now();
+  ASSERT_EQ(std::system(("script -qec '" + command + "' /dev/null >" + (dir / "tty") + " 2>&1").c_str()), 0);
+  const bool long_enough = std::chrono::steady_clock::now() - started > std::chrono::seconds(2);
+  const std::string shown = read_file(dir / "tty");
+  const std::size_t timings = shown.rfind("timings (wall clock): read ");
+  ASSERT_NE(timings, std::string::npos) << shown;
+  EXPECT_TRUE(timings == 0 || shown[timings - 1] == '\n') << shown;
+  EXPECT_EQ(shown.find('\n', timings), shown.size() - 1) << "ends the output, as one line";
+  if (!long_enough) GTEST_SKIP() << "the render took under 2 s, too short to show progress";
+  const std::size_t done = shown.find("rendering: done");
+  ASSERT_NE(done, std::string::npos) << shown;
+  EXPECT_LT(done, timings);
+}
+
 }  // namespace

@@ -9,6 +9,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace capsim::cli {
@@ -48,11 +49,13 @@ Command add_render_command(CLI::App& app) {
     }, &times);
     print_cameras(settings, scenes);
     const int width = scenes[0].camera.width, height = scenes[0].camera.height;
-    Progress progress(frames == 1 ? "rendering" : "frames", frames == 1 ? render_work(width, height, aa) : frames,
-                      Console(*quiet).progress_bar());
+    // Ended before the timings are printed: its last line comes first.
+    std::optional<Progress> progress(std::in_place, frames == 1 ? "rendering" : "frames",
+                                     frames == 1 ? render_work(width, height, aa) : frames,
+                                     Console(*quiet).progress_bar());
     for (int k = 0; k < frames; ++k) {
       const Tracer tracer(scenes[k], settings.trace);
-      Progress* rows = frames == 1 ? &progress : nullptr;
+      Progress* rows = frames == 1 ? &*progress : nullptr;
       PendingFile& out = outputs[frame_output_option(k, numbered)];
       if (png) {
         // Colour only, straight to the PNG's filtered 8-bit rows, each by the
@@ -88,8 +91,9 @@ Command add_render_command(CLI::App& app) {
         write_image(out, fb, {samples});
       }
       times.end("write");
-      if (frames > 1) progress.advance(1);
+      if (frames > 1) progress->advance(1);
     }
+    progress.reset();
     outputs.commit();
     times.end("write");
     if (*timings) std::fputs(times.line().c_str(), stderr);
