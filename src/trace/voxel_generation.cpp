@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <span>
+#include <stdexcept>
 
 namespace capsim {
 
@@ -25,31 +26,66 @@ struct FacePlane {
   bool front;
 };
 
+// At most N values, kept in place: each primitive's hull and planes are built
+// and dropped thousands of times a scene, where a heap allocation each would
+// cost about as much as the arithmetic.
+template <class T, std::size_t N>
+class FixedList {
+ public:
+  void push_back(const T& v) { items_[size_++] = v; }  // precondition: size() < N
+  void resize(std::size_t n) { size_ = n; }            // precondition: n <= N
+  std::size_t size() const { return size_; }
+  T& operator[](std::size_t i) { return items_[i]; }
+  const T& operator[](std::size_t i) const { return items_[i]; }
+  const T* begin() const { return items_.data(); }
+  const T* end() const { return items_.data() + size_; }
+
+ private:
+  std::array<T, N> items_;
+  std::size_t size_ = 0;
+};
+
+// 6 box faces, and for a sphere 20 more (make_bounding_directions).
+constexpr std::size_t kMaxBoundingDirections = 26;
+
+// A bounding plane's outward direction in object space.
+struct BoundingDirection {
+  glm::dvec3 u;
+  // Worked out once rather than for every primitive: what the sphere's and
+  // the cone's supports are made from, and the same bits either way.
+  double length;  // |u|
+  double radial;  // |(u.x, u.y)|
+};
+
 // The object-space directions whose supporting planes bound a primitive: the box
 // faces always (a mesh's own box); for the curved primitives also the 45-degree planes, the extra
 // circumscribing planes of the paper's fig. 2-2, which cut the corners of the box
 // that the sphere and the cone leave empty.
-std::vector<glm::dvec3> make_bounding_directions(PrimitiveKind kind) {
+std::vector<BoundingDirection> make_bounding_directions(PrimitiveKind kind) {
   std::vector<glm::dvec3> dirs = {{-1, 0, 0}, {1, 0, 0}, {0, -1, 0},
                                   {0, 1, 0},  {0, 0, -1}, {0, 0, 1}};
-  if (kind == PrimitiveKind::Box || kind == PrimitiveKind::Mesh || kind == PrimitiveKind::Revolution) return dirs;
-  for (int sx : {-1, 1})
-    for (int sy : {-1, 1}) {
-      dirs.push_back(glm::dvec3(sx, sy, 0));
-      if (kind == PrimitiveKind::Sphere) {
-        dirs.push_back(glm::dvec3(sx, 0, sy));
-        dirs.push_back(glm::dvec3(0, sx, sy));
-        for (int sz : {-1, 1}) dirs.push_back(glm::dvec3(sx, sy, sz));
+  if (kind == PrimitiveKind::Sphere || kind == PrimitiveKind::Cone) {
+    for (int sx : {-1, 1})
+      for (int sy : {-1, 1}) {
+        dirs.push_back(glm::dvec3(sx, sy, 0));
+        if (kind == PrimitiveKind::Sphere) {
+          dirs.push_back(glm::dvec3(sx, 0, sy));
+          dirs.push_back(glm::dvec3(0, sx, sy));
+          for (int sz : {-1, 1}) dirs.push_back(glm::dvec3(sx, sy, sz));
+        }
       }
-    }
-  return dirs;
+  }
+  if (dirs.size() > kMaxBoundingDirections) throw std::logic_error("more bounding directions than planes are kept");
+  std::vector<BoundingDirection> out;
+  for (const glm::dvec3& u : dirs) out.push_back({u, glm::length(u), std::hypot(u.x, u.y)});
+  return out;
 }
 
 // The same, built once per kind.
-const std::vector<glm::dvec3>& bounding_directions(PrimitiveKind kind) {
-  static const std::vector<glm::dvec3> sphere = make_bounding_directions(PrimitiveKind::Sphere);
-  static const std::vector<glm::dvec3> box = make_bounding_directions(PrimitiveKind::Box);
-  static const std::vector<glm::dvec3> cone = make_bounding_directions(PrimitiveKind::Cone);
+const std::vector<BoundingDirection>& bounding_directions(PrimitiveKind kind) {
+  static const std::vector<BoundingDirection> sphere = make_bounding_directions(PrimitiveKind::Sphere);
+  static const std::vector<BoundingDirection> box = make_bounding_directions(PrimitiveKind::Box);
+  static const std::vector<BoundingDirection> cone = make_bounding_directions(PrimitiveKind::Cone);
   switch (kind) {
     case PrimitiveKind::Sphere:
       return sphere;
@@ -65,16 +101,15 @@ const std::vector<glm::dvec3>& bounding_directions(PrimitiveKind kind) {
 }
 
 // max over the canonical solid of u . p: the supporting plane's offset.
-double support(const PreparedPrimitive& p, const glm::dvec3& u) {
+double support(const PreparedPrimitive& p, const BoundingDirection& d) {
+  const glm::dvec3& u = d.u;
   switch (p.kind) {
     case PrimitiveKind::Sphere:
-      return glm::length(u);
+      return d.length;
     case PrimitiveKind::Box:
       return std::max(u.x, 0.0) + std::max(u.y, 0.0) + std::max(u.z, 0.0);
-    case PrimitiveKind::Cone: {
-      const double radial = std::hypot(u.x, u.y);
-      return std::max(p.cone_r1 * radial, p.cone_r2 * radial + u.z);
-    }
+    case PrimitiveKind::Cone:
+      return std::max(p.cone_r1 * d.radial, p.cone_r2 * d.radial + u.z);
     case PrimitiveKind::Mesh:
     case PrimitiveKind::Revolution: {
       // The mesh's (the revolution's) own box bounds it: its faces are the box
@@ -91,24 +126,26 @@ double support(const PreparedPrimitive& p, const glm::dvec3& u) {
 // The bounding planes carried to world space: u . q <= h in object space with
 // q = A^-1 (p - t) becomes (A^-T u) . p <= h + (A^-T u) . t. Only the planes that
 // are not vertical bound Z; each is kept as its height over the X-Y plane.
-std::vector<FacePlane> world_face_planes(const PreparedPrimitive& p) {
-  const std::vector<glm::dvec3>& dirs = bounding_directions(p.kind);
-  std::vector<FacePlane> faces;
-  faces.reserve(dirs.size());
+using FacePlanes = FixedList<FacePlane, kMaxBoundingDirections>;
+FacePlanes world_face_planes(const PreparedPrimitive& p) {
+  FacePlanes faces;
   const glm::dvec3 t(p.to_world[3]);
-  for (const glm::dvec3& u : dirs) {
-    const glm::dvec3 n = p.normal_to_world * u;
-    const double d = support(p, u) + glm::dot(n, t);
+  for (const BoundingDirection& dir : bounding_directions(p.kind)) {
+    const glm::dvec3 n = p.normal_to_world * dir.u;
+    const double d = support(p, dir) + glm::dot(n, t);
     if (n.z != 0) faces.push_back({d / n.z, -n.x / n.z, -n.y / n.z, n.z > 0});
   }
   return faces;
 }
 
-// The convex hull (counter-clockwise) of the projected box corners.
-std::vector<glm::dvec2> convex_hull(std::array<glm::dvec2, 8> pts) {
+// The convex hull (counter-clockwise) of the projected box corners. Andrew's
+// monotone chain holds at most twice the points while it builds the hull.
+using Hull = FixedList<glm::dvec2, 16>;
+Hull convex_hull(std::array<glm::dvec2, 8> pts) {
   std::sort(pts.begin(), pts.end(),
             [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-  std::vector<glm::dvec2> hull(2 * pts.size());
+  Hull hull;
+  hull.resize(2 * pts.size());
   std::size_t k = 0;
   auto cross = [](const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
     return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -127,7 +164,7 @@ std::vector<glm::dvec2> convex_hull(std::array<glm::dvec2, 8> pts) {
 
 // Separating-axis test: does the rectangle [lo, hi] meet the convex polygon?
 // The rectangle's own axes are covered by the caller's column range.
-bool rect_meets_hull(const glm::dvec2& lo, const glm::dvec2& hi, const std::vector<glm::dvec2>& hull) {
+bool rect_meets_hull(const glm::dvec2& lo, const glm::dvec2& hi, const Hull& hull) {
   const std::size_t m = hull.size();
   if (m < 3) return true;
   for (std::size_t i = 0; i < m; ++i) {
@@ -165,8 +202,8 @@ void place_primitive(const PreparedPrimitive& p, const Aabb& u, int n, const glm
     ++counts->matmat;
     counts->matvec += 8;
   }
-  const std::vector<glm::dvec2> hull = convex_hull(projected);
-  const std::vector<FacePlane> faces = world_face_planes(p);
+  const Hull hull = convex_hull(projected);
+  const FacePlanes faces = world_face_planes(p);
 
   const Aabb& wb = p.world_bounds;
   const int x0 = clamp_index((wb.lo.x - eps - u.lo.x) / vs.x, n);
