@@ -194,17 +194,19 @@ struct PackedRow {
 // samples and counts. Either gives the same cells to the bit.
 struct TracingNow {
   const Tracer& tracer;
-  // Row y's pixels: trace them all into w (its rays' count is the row's width).
-  void row(int y, ShadedRowWorkspace& w) const {
+  // A thread's rows of rays, samples and counts, a row of the screen long.
+  using Workspace = ShadedRowWorkspace;
+  Workspace workspace(int width) const { return ShadedRowWorkspace(tracer, width); }
+  // Row y's pixels: trace them all into w.
+  void row(int y, Workspace& w) const {
     tracer.primary_rays(y, w.rays);
     w.shade(tracer, w.samples);
   }
   // Pixel (x, y) of the row traced last into w; its operations are added to ops.
-  PixelSample pixel(const ShadedRowWorkspace& w, int x, int, OpCounts& ops) const {
+  PixelSample pixel(const Workspace& w, int x, int, OpCounts& ops) const {
     ops += w.ops[static_cast<std::size_t>(x)];
     return w.samples[static_cast<std::size_t>(x)];
   }
-  int row_rays(int width) const { return width; }
   const unsigned char* srgb8(int, int) const { return nullptr; }
   template <class RowCost>
   CornerSamples corners(int threads, const RowCost& cost, Progress* progress) const {
@@ -220,12 +222,14 @@ struct TracingNow {
 struct TracedAhead {
   const ScreenTrace& screen;
   std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * screen.width + x; }
-  void row(int, ShadedRowWorkspace&) const {}
-  PixelSample pixel(const ShadedRowWorkspace&, int x, int y, OpCounts& ops) const {
+  // Nothing to trace: the samples are the screen's.
+  struct Workspace {};
+  Workspace workspace(int) const { return {}; }
+  void row(int, Workspace&) const {}
+  PixelSample pixel(const Workspace&, int x, int y, OpCounts& ops) const {
     screen.pixel_ops.add_to(at(x, y), ops);
     return screen.pixels[at(x, y)];
   }
-  int row_rays(int) const { return 0; }
   const unsigned char* srgb8(int x, int y) const { return screen.srgb8.data() + at(x, y) * 3; }
   // The corners' costs handed on in row order, on this thread.
   template <class RowCost>
@@ -376,10 +380,10 @@ std::vector<TracedCell> trace_cells_plain(const Source& source, const Tracer& tr
   // them (neighbouring rays share voxels and primitives in the caches), and each
   // sample goes to the video-memory slot of the cell whose window shows it.
   tbb::enumerable_thread_specific<Sums> sums([&] { return Sums(layout, chunk_pixels); });
-  tbb::enumerable_thread_specific<ShadedRowWorkspace> workspaces(
-      [&] { return ShadedRowWorkspace(tracer, source.row_rays(layout.width())); });
+  tbb::enumerable_thread_specific<typename Source::Workspace> workspaces(
+      [&] { return source.workspace(layout.width()); });
   parallel_rows(threads, layout.height(), [&](const tbb::blocked_range<int>& rows) {
-    ShadedRowWorkspace& w = workspaces.local();
+    typename Source::Workspace& w = workspaces.local();
     Sums& sum = sums.local();
     for (int y = rows.begin(); y != rows.end(); ++y) {
       source.row(y, w);
