@@ -91,36 +91,45 @@ TEST(CliQuiet, ReproLeavesOutItsTimedProgress) {
   for (std::size_t k = 1; k < summary.size(); ++k) EXPECT_EQ(summary[k], all[k]);  // line 0 holds the time
 }
 
-// Progress shows on a terminal after the first second: util-linux's script
-// gives the run one (a pseudo-terminal), and a render of a few seconds.
+// A render of a few seconds (4096 x 4096 of chess, one thread) on a terminal:
+// util-linux's script gives the run one (a pseudo-terminal). What the
+// terminal showed, and the exit status.
+struct TerminalRun {
+  int status;
+  std::string shown;
+};
+TerminalRun render_on_a_terminal(const TempDir& dir, const std::string& options) {
+  const std::string command = std::string(CAPSIM_EXE) + " render " + scene_path("chess.csg") +
+                              " --size 4096x4096 --threads 1 -o " + (dir / "c.png") + options;
+  const std::string run = "script -qec '" + command + "' /dev/null >" + (dir / "tty") + " 2>&1";
+  const int status = std::system(run.c_str());
+  return {status, read_file(dir / "tty")};
+}
+
+// Progress shows on a terminal after the first second.
 TEST(CliQuiet, RenderOnATerminalShowsNoPercentage) {
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give a terminal";
   TempDir dir;
-  const auto on_a_terminal = [&](const std::string& options) {
-    const std::string command = std::string(CAPSIM_EXE) + " render " + scene_path("chess.csg") +
-                                " --size 4096x4096 --threads 1 -o " + (dir / "c.png") + options;
-    const std::string run = "script -qec '" + command + "' /dev/null >" + (dir / "tty") + " 2>&1";
-    EXPECT_EQ(std::system(run.c_str()), 0);
-    return read_file(dir / "tty");
-  };
   const auto started = std::chrono::steady_clock::now();
-  const std::string shown = on_a_terminal("");
+  const TerminalRun plain = render_on_a_terminal(dir, "");
   const bool long_enough = std::chrono::steady_clock::now() - started > std::chrono::seconds(2);
-  EXPECT_EQ(on_a_terminal(" --quiet"), "");
+  EXPECT_EQ(plain.status, 0);
+  const TerminalRun quiet = render_on_a_terminal(dir, " --quiet");
+  EXPECT_EQ(quiet.status, 0);
+  EXPECT_EQ(quiet.shown, "");
   if (!long_enough) GTEST_SKIP() << "the render took under 2 s, too short to show progress without --quiet";
-  EXPECT_NE(shown.find("rendering: "), std::string::npos) << shown;
+  EXPECT_NE(plain.shown.find("rendering: "), std::string::npos) << plain.shown;
 }
 
 // --timings' line comes after the progress's last, on a line of its own.
 TEST(CliQuiet, RenderOnATerminalEndsWithTheTimings) {
   if (std::system("command -v script >/dev/null 2>&1") != 0) GTEST_SKIP() << "no script(1) to give a terminal";
   TempDir dir;
-  const std::string command = std::string(CAPSIM_EXE) + " render " + scene_path("chess.csg") +
-                              " --size 4096x4096 --threads 1 --timings -o " + (dir / "c.png");
   const auto started = std::chrono::steady_clock::now();
-  ASSERT_EQ(std::system(("script -qec '" + command + "' /dev/null >" + (dir / "tty") + " 2>&1").c_str()), 0);
+  const TerminalRun run = render_on_a_terminal(dir, " --timings");
   const bool long_enough = std::chrono::steady_clock::now() - started > std::chrono::seconds(2);
-  const std::string shown = read_file(dir / "tty");
+  ASSERT_EQ(run.status, 0);
+  const std::string& shown = run.shown;
   const std::size_t timings = shown.rfind("timings (wall clock): read ");
   ASSERT_NE(timings, std::string::npos) << shown;
   EXPECT_TRUE(timings == 0 || shown[timings - 1] == '\n') << shown;
