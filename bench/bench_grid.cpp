@@ -4,8 +4,8 @@
 // Usage: bench_grid [SCENE...]   (default: every scenes/*.csg)
 // Times are wall-clock medians of 3 runs on one thread; entries are exact.
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <fmt/core.h>
 

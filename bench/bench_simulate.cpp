@@ -12,8 +12,8 @@
 #include "machine/machine.h"
 #include "machine/parts/corner_exchange.h"
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <benchmark/benchmark.h>
 

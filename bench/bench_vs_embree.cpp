@@ -23,8 +23,8 @@
 //
 // Needs the capsim executable (CAPSIM_EXE, built by the `capsim` target).
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <embree3/rtcore.h>
 #include <fmt/core.h>

@@ -27,8 +27,8 @@
 //
 // Needs the capsim executable (CAPSIM_EXE) and povray on PATH.
 
-#include "capsim/parser.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/tracer.h"
 #include "pov/pov_scene.h"
 
 #include <fmt/core.h>

@@ -1,6 +1,6 @@
 #include "pov/pov_scene.h"
 
-#include "capsim/csg_bounds.h"
+#include "capsim/trace/csg_bounds.h"
 
 #include <fmt/core.h>
 

@@ -4,7 +4,7 @@
 // primitives, CSG and materials, reflection and refraction to capsim's depth,
 // no antialiasing, radiosity or photons. bench_vs_povray renders both.
 
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <stdexcept>
 #include <string>

@@ -8,7 +8,7 @@
 #include "machine/parts/corner_exchange.h"
 #include "machine/costs/cost_profile.h"
 
-#include "capsim/op_counts.h"
+#include "capsim/trace/op_counts.h"
 
 #include <cstdint>
 #include <vector>

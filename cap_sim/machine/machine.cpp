@@ -2,9 +2,9 @@
 
 #include "machine/unit_memory.h"
 
-#include "capsim/host_threads.h"
-#include "capsim/image_io.h"
-#include "capsim/progress.h"
+#include "capsim/image/image_io.h"
+#include "capsim/system/host_threads.h"
+#include "capsim/system/progress.h"
 
 #include <fmt/core.h>
 #include <tbb/task_arena.h>

@@ -18,9 +18,9 @@
 #include "machine/traced_cells.h"
 #include "machine/parts/window_controller.h"
 
-#include "capsim/prepared_scene.h"
-#include "capsim/render.h"
-#include "capsim/tracer.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/render.h"
+#include "capsim/trace/tracer.h"
 
 #include <cstdint>
 #include <vector>

@@ -6,7 +6,7 @@
 // An item with a count that does not fit 32 bits is kept whole on the side,
 // so every count read back is the one set, to the bit.
 
-#include "capsim/op_counts.h"
+#include "capsim/trace/op_counts.h"
 
 #include <array>
 #include <bit>

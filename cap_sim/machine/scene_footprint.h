@@ -20,7 +20,7 @@
 //   light:            position, colour                     6 x 4          =  24 bytes
 //   background colour                                      3 x 4          =  12 bytes
 
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <cstdint>
 

@@ -2,9 +2,9 @@
 
 #include "machine/parts/balance.h"
 
-#include "capsim/host_threads.h"
-#include "capsim/image_io.h"
-#include "capsim/progress.h"
+#include "capsim/image/image_io.h"
+#include "capsim/system/host_threads.h"
+#include "capsim/system/progress.h"
 
 #include <fmt/core.h>
 

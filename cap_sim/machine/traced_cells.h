@@ -9,10 +9,10 @@
 #include "machine/packed_op_counts.h"
 #include "machine/parts/window_controller.h"
 
-#include "capsim/antialias.h"
-#include "capsim/progress.h"
-#include "capsim/render.h"
-#include "capsim/tracer.h"
+#include "capsim/system/progress.h"
+#include "capsim/trace/antialias.h"
+#include "capsim/trace/render.h"
+#include "capsim/trace/tracer.h"
 
 #include <cstdint>
 #include <vector>

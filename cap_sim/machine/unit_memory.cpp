@@ -2,7 +2,7 @@
 
 #include "machine/parts/corner_exchange.h"
 
-#include "capsim/antialias.h"
+#include "capsim/trace/antialias.h"
 
 #include <fmt/core.h>
 

@@ -1,8 +1,8 @@
 #include "paper/experiment_run.h"
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 #include "paper/simulate_command.h"
 
 #include <fmt/core.h>

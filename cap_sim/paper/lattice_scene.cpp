@@ -2,7 +2,7 @@
 
 #include "paper/repro/paper_figures.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <fmt/core.h>
 

@@ -16,7 +16,7 @@
 // face of a kLatticeViewSide x kLatticeViewSide lattice, so a smaller lattice
 // covers the middle of the screen.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 #include <optional>
 #include <string>

@@ -4,7 +4,7 @@
 // reproduction and the mode benchmarks print it with only the options that
 // differ from the defaults, and a sweep can print its points the same way.
 
-#include "capsim/antialias.h"
+#include "capsim/trace/antialias.h"
 #include "machine/parts/balance.h"
 #include "machine/parts/cell_grid.h"
 #include "machine/parts/voxel_shares.h"

@@ -1,6 +1,6 @@
 #include "report/heatmap.h"
 
-#include "capsim/srgb.h"
+#include "capsim/image/srgb.h"
 
 #include <fmt/core.h>
 

@@ -7,7 +7,7 @@
 #include "report/page_data.h"
 #include "report/sim_report.h"
 
-#include "capsim/image_io.h"
+#include "capsim/image/image_io.h"
 
 #include <fmt/core.h>
 #include <fmt/ranges.h>

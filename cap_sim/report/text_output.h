@@ -2,7 +2,7 @@
 // Writes a text output (JSON report, trace) under a temporary name and renames it
 // on success, so a failed run never leaves a half-written file.
 
-#include "capsim/pending_file.h"
+#include "capsim/system/pending_file.h"
 
 #include <string>
 

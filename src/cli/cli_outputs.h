@@ -5,7 +5,7 @@
 // They are written under temporary names and put in place only once all are
 // complete, so a failure leaves none of them changed.
 
-#include "capsim/pending_file.h"
+#include "capsim/system/pending_file.h"
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include "cli/command_failure.h"
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>

@@ -1,6 +1,6 @@
 #include "cli/console.h"
 
-#include "capsim/progress.h"
+#include "capsim/system/progress.h"
 #include "cli/options/cli_options.h"
 
 #include <fmt/core.h>

@@ -1,6 +1,6 @@
 // capsim: the Cellular Array Processor ray-tracing simulator.
 
-#include "capsim/temp_file_registry.h"
+#include "capsim/system/temp_file_registry.h"
 #include "cli/commands/cli_commands.h"
 #include "cli/command_failure.h"
 #include "cli/options/cli_usage.h"

@@ -1,7 +1,7 @@
 #include "cli/scad_export.h"
 
-#include "capsim/scene.h"
-#include "capsim/temp_file_registry.h"
+#include "capsim/scene/scene.h"
+#include "capsim/system/temp_file_registry.h"
 
 #include <fcntl.h>
 #include <spawn.h>

@@ -1,4 +1,4 @@
-#include "capsim/framebuffer.h"
+#include "capsim/image/framebuffer.h"
 
 #include <limits>
 

@@ -1,7 +1,7 @@
-#include "capsim/image_io.h"
+#include "capsim/image/image_io.h"
 
-#include "capsim/shared_library.h"
-#include "capsim/srgb.h"
+#include "capsim/image/srgb.h"
+#include "capsim/system/shared_library.h"
 #include "image/exr_writer_module.h"
 #include "image/zlib_bands.h"
 

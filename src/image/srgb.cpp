@@ -1,4 +1,4 @@
-#include "capsim/srgb.h"
+#include "capsim/image/srgb.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "image/zlib_bands.h"
 
-#include "capsim/host_threads.h"
+#include "capsim/system/host_threads.h"
 
 #include <libdeflate.h>
 #include <tbb/enumerable_thread_specific.h>

@@ -1,10 +1,10 @@
 #pragma once
 // The functions of libxml2's text reader that the AMF and SVG imports call,
 // from the library opened on the first import rather than at every start
-// (capsim/shared_library.h): libxml2 brings ICU, which every run would
+// (capsim/system/shared_library.h): libxml2 brings ICU, which every run would
 // otherwise load and relocate.
 
-#include "capsim/shared_library.h"
+#include "capsim/system/shared_library.h"
 
 #include <libxml/xmlreader.h>
 

@@ -1,7 +1,7 @@
 // The small pieces of scene.h that are not plain data: source locations, the
 // error type every bad input becomes, and names for enums.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "capsim/host_threads.h"
+#include "capsim/system/host_threads.h"
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>

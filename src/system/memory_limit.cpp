@@ -1,4 +1,4 @@
-#include "capsim/memory_limit.h"
+#include "capsim/system/memory_limit.h"
 
 #include <fmt/core.h>
 #include <sys/resource.h>

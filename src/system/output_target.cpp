@@ -1,4 +1,4 @@
-#include "capsim/output_target.h"
+#include "capsim/system/output_target.h"
 
 #include <fcntl.h>
 #include <fmt/core.h>

@@ -1,6 +1,6 @@
-#include "capsim/pending_file.h"
+#include "capsim/system/pending_file.h"
 
-#include "capsim/temp_file_registry.h"
+#include "capsim/system/temp_file_registry.h"
 
 #include <fcntl.h>
 #include <fmt/core.h>

@@ -1,4 +1,4 @@
-#include "capsim/progress.h"
+#include "capsim/system/progress.h"
 
 #include <fmt/core.h>
 #include <unistd.h>

@@ -1,4 +1,4 @@
-#include "capsim/sha256.h"
+#include "capsim/system/sha256.h"
 
 #include <fmt/core.h>
 

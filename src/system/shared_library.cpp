@@ -1,4 +1,4 @@
-#include "capsim/shared_library.h"
+#include "capsim/system/shared_library.h"
 
 #include <dlfcn.h>
 #include <fmt/core.h>

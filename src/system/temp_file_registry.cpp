@@ -1,4 +1,4 @@
-#include "capsim/temp_file_registry.h"
+#include "capsim/system/temp_file_registry.h"
 
 #include <limits.h>
 #include <signal.h>

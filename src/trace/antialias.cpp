@@ -1,8 +1,8 @@
-// Whitted's adaptive antialiasing from corner samples (see capsim/antialias.h).
+// Whitted's adaptive antialiasing from corner samples (see capsim/trace/antialias.h).
 
-#include "capsim/antialias.h"
+#include "capsim/trace/antialias.h"
 
-#include "capsim/srgb.h"
+#include "capsim/image/srgb.h"
 
 #include <algorithm>
 #include <cstdlib>

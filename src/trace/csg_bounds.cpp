@@ -1,4 +1,4 @@
-#include "capsim/csg_bounds.h"
+#include "capsim/trace/csg_bounds.h"
 
 namespace capsim {
 

@@ -1,6 +1,6 @@
 // Algorithm-2 of the paper: the parametric 3DDDA.
 
-#include "capsim/dda.h"
+#include "capsim/trace/dda.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // A mesh leaf's crossings with a line: the hierarchy walked, each triangle
 // tested watertight, the hits merged into the solid's boundary crossings.
 
-#include "capsim/mesh_geometry.h"
+#include "capsim/trace/mesh_geometry.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "capsim/op_counts.h"
+#include "capsim/trace/op_counts.h"
 
 namespace capsim {
 

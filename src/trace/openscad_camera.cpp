@@ -1,4 +1,4 @@
-#include "capsim/openscad_camera.h"
+#include "capsim/trace/openscad_camera.h"
 
 #include <fmt/format.h>
 

@@ -1,7 +1,7 @@
 // Real roots of low-degree polynomials by isolation between the derivative's
 // roots (polynomial_roots.h).
 
-#include "capsim/polynomial_roots.h"
+#include "capsim/trace/polynomial_roots.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 
-#include "capsim/csg_bounds.h"
-#include "capsim/scene_range.h"
+#include "capsim/trace/csg_bounds.h"
+#include "capsim/trace/scene_range.h"
 
 #include <fmt/core.h>
 

@@ -1,4 +1,4 @@
-#include "capsim/primitive_geometry.h"
+#include "capsim/trace/primitive_geometry.h"
 
 #include <algorithm>
 #include <array>

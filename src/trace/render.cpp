@@ -1,7 +1,7 @@
-#include "capsim/render.h"
+#include "capsim/trace/render.h"
 
-#include "capsim/host_threads.h"
-#include "capsim/srgb.h"
+#include "capsim/image/srgb.h"
+#include "capsim/system/host_threads.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>

@@ -1,8 +1,8 @@
 // Line crossings of a turned profile (revolution_geometry.h).
 
-#include "capsim/revolution_geometry.h"
+#include "capsim/trace/revolution_geometry.h"
 
-#include "capsim/polynomial_roots.h"
+#include "capsim/trace/polynomial_roots.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // The scene-relative range of scene values, checked as a scene is prepared.
 
-#include "capsim/scene_range.h"
+#include "capsim/trace/scene_range.h"
 
 #include <fmt/format.h>
 

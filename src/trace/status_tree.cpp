@@ -1,6 +1,6 @@
 // Algorithm-4 of the paper: the status tree, evaluated bottom-up.
 
-#include "capsim/status_tree.h"
+#include "capsim/trace/status_tree.h"
 
 #include <algorithm>
 #include <memory>

@@ -1,7 +1,7 @@
 // The tracer: partial evaluation along a ray (3DDDA + status tree, voxel by
 // voxel) and Whitted shading.
 
-#include "capsim/tracer.h"
+#include "capsim/trace/tracer.h"
 
 #include <algorithm>
 #include <cmath>

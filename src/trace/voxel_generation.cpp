@@ -2,9 +2,9 @@
 // to world space, is projected onto the X-Y plane, and in each voxel column the
 // projection covers the box's faces, taken as infinite planes, bound Z.
 
-#include "capsim/voxel_grid.h"
+#include "capsim/trace/voxel_grid.h"
 
-#include "capsim/host_threads.h"
+#include "capsim/system/host_threads.h"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-// A library capsim opens on first use (capsim/shared_library.h) that cannot
+// A library capsim opens on first use (capsim/system/shared_library.h) that cannot
 // be loaded: the import or text() that needs it is refused at its place in the
 // scene, naming the library, the loader's reason and what needs it (exit 1,
 // nothing written), while a scene that needs none of them still renders. The

@@ -6,7 +6,7 @@
 #include "support/cli_run.h"
 #include "support/html_page.h"
 
-#include "capsim/sha256.h"
+#include "capsim/system/sha256.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

@@ -5,8 +5,8 @@
 #include "support/cli_run.h"
 #include "support/html_page.h"
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

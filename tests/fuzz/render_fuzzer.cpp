@@ -7,9 +7,9 @@
 // primitives are skipped, so that one input cannot run for seconds (their cost
 // is the subject of the scale tests, not of this target).
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 
 #include <cmath>
 #include <cstddef>

@@ -1,10 +1,10 @@
 // Fuzz target: the scene parser on arbitrary bytes.
 //
-// The contract (include/capsim/parser.h): parse_scene returns a scene or throws
+// The contract (include/capsim/scene/parser.h): parse_scene returns a scene or throws
 // SceneError. Any other exception escapes and is reported as a crash, as are
 // memory errors, undefined behaviour and stack overflow.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <cstddef>
 #include <cstdint>

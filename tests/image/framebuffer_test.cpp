@@ -1,6 +1,6 @@
 // The bytes a framebuffer's estimate counts are those it holds.
 
-#include "capsim/framebuffer.h"
+#include "capsim/image/framebuffer.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Image output: the sRGB encoding, PNG and EXR contents read back by an
 // independent reader (OpenImageIO), and failures that leave nothing behind.
 
-#include "capsim/image_io.h"
-#include "capsim/shared_library.h"
-#include "capsim/srgb.h"
+#include "capsim/image/image_io.h"
+#include "capsim/image/srgb.h"
+#include "capsim/system/shared_library.h"
 #include "support/cli_run.h"
 #include "image/exr_writer_module.h"
 

@@ -1,5 +1,5 @@
 // The layers hold: every include of a project header names it by its path
-// from a root ("machine/parts/cell.h", "capsim/dda.h"), and no file includes a
+// from a root ("machine/parts/cell.h", "capsim/trace/dda.h"), and no file includes a
 // header of a layer above its own. The layers and what each links are the
 // build's (CAPSIM_LAYERS, from capsim_layer() in CMakeLists.txt); a layer may
 // include its own headers and those of the layers it links, directly or
@@ -41,11 +41,6 @@ std::map<std::string, Layer> parse_layers(const std::string& text) {
   return layers;
 }
 
-// Public headers whose layer their name does not tell: those without a
-// source file of the same name in a layer's folder.
-const std::map<std::string, std::string> kPublicHeaderLayers = {
-    {"bounds.h", "scene"}, {"ray.h", "trace"}, {"voxel_grid.h", "trace"}};
-
 class LayerCheck {
  public:
   LayerCheck(fs::path root, std::map<std::string, Layer> layers) : root_(std::move(root)), layers_(std::move(layers)) {}
@@ -65,13 +60,11 @@ class LayerCheck {
     const std::string dir = p.parent_path().generic_string();
     for (const auto& [name, l] : layers_)
       if (dir == l.dir || dir.rfind(l.dir + "/", 0) == 0) return name;  // a layer's stage folders are its own
-    if (dir == "include/capsim") {
-      const std::string stem = p.stem().string();
-      for (const auto& [name, l] : layers_)
-        for (const fs::directory_entry& e : fs::recursive_directory_iterator(root_ / l.dir))
-          if (e.path().filename() == stem + ".cpp") return name;
-      if (const auto it = kPublicHeaderLayers.find(p.filename().string()); it != kPublicHeaderLayers.end()) return it->second;
-      return "?";  // a public header no layer owns
+    // A public header sits in the folder of its layer: include/capsim/trace/dda.h.
+    if (dir == "include/capsim" || dir.rfind("include/capsim/", 0) == 0) {
+      const std::string sub = dir == "include/capsim" ? "" : dir.substr(15);
+      if (layers_.count(sub)) return sub;
+      return "?";  // a public header outside its layer's folder
     }
     // Tests sit in the layer they test; the oracle and the fuzz targets test the tracer.
     if (dir.rfind("tests/", 0) == 0) {
@@ -86,7 +79,7 @@ class LayerCheck {
   std::vector<std::string> problems(const std::string& path, const std::string& text) const {
     std::vector<std::string> out;
     const std::optional<std::string> layer = layer_of(path);
-    if (layer && *layer == "?") out.push_back(path + ": a public header that belongs to no layer (name it in kPublicHeaderLayers)");
+    if (layer && *layer == "?") out.push_back(path + ": a public header outside include/capsim/LAYER/, LAYER a layer's name");
     static const std::regex include(R"re(^\s*#\s*include\s*"([^"]+)")re");
     std::istringstream lines(text);
     int n = 0;
@@ -175,12 +168,16 @@ TEST(Layers, NoIncludeRunsBackUp) {
 TEST(Layers, TheCheckFindsAnIncludeThatRunsBackUp) {
   const LayerCheck check = project_check();
   EXPECT_TRUE(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"kernel/cycles.h\"\n").empty());
-  EXPECT_TRUE(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"capsim/tracer.h\"\n").empty());
+  EXPECT_TRUE(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"capsim/trace/tracer.h\"\n").empty());
   const std::vector<std::string> up = check.problems("cap_sim/machine/parts/cell.cpp", "\n#include \"report/sim_report.h\"\n");
   ASSERT_EQ(up.size(), 1u);
   EXPECT_EQ(up[0], "cap_sim/machine/parts/cell.cpp:2: \"report/sim_report.h\" runs back up: layer machine includes layer report");
   EXPECT_EQ(check.problems("src/trace/dda.cpp", "#include \"machine/parts/cell.h\"\n").size(), 1u);
-  EXPECT_EQ(check.problems("src/scene/reading/parser.cpp", "#include \"capsim/tracer.h\"\n").size(), 1u);
+  EXPECT_EQ(check.problems("src/scene/reading/parser.cpp", "#include \"capsim/trace/tracer.h\"\n").size(), 1u);
+  // A public header outside the folder of a layer belongs to none.
+  EXPECT_EQ(check.problems("include/capsim/ray.h", "").size(), 1u);
+  EXPECT_EQ(check.problems("include/capsim/shading/ray.h", "").size(), 1u);
+  EXPECT_TRUE(check.problems("include/capsim/trace/ray.h", "#include \"capsim/scene/bounds.h\"\n").empty());
   EXPECT_EQ(check.problems("tests/machine/x_test.cpp", "#include \"report/heatmap.h\"\n").size(), 1u);
   // A header named by its bare file name does not build, and is refused here.
   EXPECT_EQ(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"cycles.h\"\n").size(), 1u);

@@ -7,8 +7,8 @@
 #include "machine/run_figures.h"
 #include "support/sim_test_profile.h"
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <gtest/gtest.h>
 

@@ -12,8 +12,8 @@
 #include "support/balance_scenes.h"
 #include "support/shipped_scene.h"
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

@@ -7,7 +7,7 @@
 #include "machine/machine.h"
 #include "support/sequence_builders.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include "machine/unit_memory.h"
 #include "machine/run_figures.h"
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

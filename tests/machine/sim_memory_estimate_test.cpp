@@ -1,7 +1,7 @@
 // The memory a simulation's image buffers take, per pixel, as the estimate
 // checked before a run counts it.
 
-#include "capsim/image_io.h"
+#include "capsim/image/image_io.h"
 #include "machine/machine.h"
 
 #include <gtest/gtest.h>

@@ -5,7 +5,7 @@
 #include "machine/costs/cost_profile.h"
 #include "machine/scene_footprint.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <gtest/gtest.h>
 

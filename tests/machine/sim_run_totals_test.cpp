@@ -5,8 +5,8 @@
 #include "machine/machine.h"
 #include "support/sim_test_profile.h"
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 
 #include "machine/machine.h"
 
-#include "capsim/image_io.h"
-#include "capsim/parser.h"
+#include "capsim/image/image_io.h"
+#include "capsim/scene/parser.h"
 
 #include <gtest/gtest.h>
 

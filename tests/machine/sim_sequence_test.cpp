@@ -6,8 +6,8 @@
 #include "machine/run_figures.h"
 #include "support/sequence_builders.h"
 
-#include "capsim/parser.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/render.h"
 
 #include <fmt/core.h>
 

@@ -12,8 +12,8 @@
 #include "support/balance_scenes.h"
 #include "support/shipped_scene.h"
 
-#include "capsim/antialias.h"
-#include "capsim/render.h"
+#include "capsim/trace/antialias.h"
+#include "capsim/trace/render.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

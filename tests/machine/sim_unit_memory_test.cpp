@@ -7,7 +7,7 @@
 #include "machine/unit_memory.h"
 #include "support/sequence_builders.h"
 
-#include "capsim/antialias.h"
+#include "capsim/trace/antialias.h"
 
 #include <gtest/gtest.h>
 

@@ -13,7 +13,7 @@
 #include "support/sequence_builders.h"
 #include "support/shipped_scene.h"
 
-#include "capsim/render.h"
+#include "capsim/trace/render.h"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 // image's silhouette (the tessellated spheres and cylinders of the STL move
 // it). Skipped when openscad or the examples are not installed.
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 #include "oracle/oracle_embree.h"
 #include "scene/meshes/mesh_files.h"
 #include "support/cli_run.h"

@@ -9,7 +9,7 @@
 
 #include "oracle/oracle_roth.h"
 
-#include "capsim/tracer.h"
+#include "capsim/trace/tracer.h"
 
 #include <fmt/core.h>
 

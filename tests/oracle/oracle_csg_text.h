@@ -3,7 +3,7 @@
 // so that a failing random case can be reproduced with the capsim command line
 // and read by a person.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 #include <fmt/core.h>
 

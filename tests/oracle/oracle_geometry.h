@@ -9,8 +9,8 @@
 // a small gap means the crossing lies near an edge (box edge, cone rim), where
 // the surface and hence the normal are ambiguous although t is not.
 
-#include "capsim/ray.h"
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
+#include "capsim/trace/ray.h"
 
 #include <glm/glm.hpp>
 

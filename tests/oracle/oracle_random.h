@@ -6,8 +6,8 @@
 
 #include "oracle/oracle_geometry.h"
 
-#include "capsim/ray.h"
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
+#include "capsim/trace/ray.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>

@@ -8,7 +8,7 @@
 
 #include "oracle/oracle_embree.h"
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 #include <algorithm>
 #include <cmath>

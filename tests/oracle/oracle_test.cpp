@@ -11,8 +11,8 @@
 #include "oracle/oracle_random.h"
 #include "oracle/oracle_roth.h"
 
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

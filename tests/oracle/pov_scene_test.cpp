@@ -3,8 +3,8 @@
 
 #include "pov/pov_scene.h"
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <gtest/gtest.h>
 

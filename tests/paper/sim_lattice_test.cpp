@@ -4,9 +4,9 @@
 #include "paper/lattice_scene.h"
 #include "support/cli_run.h"
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/render.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/render.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

@@ -17,7 +17,7 @@
 #include "report/sim_report.h"
 #include "support/sequence_builders.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/core.h>

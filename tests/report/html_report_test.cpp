@@ -13,8 +13,8 @@
 #include "report/sim_report.h"
 #include "support/sequence_builders.h"
 
-#include "capsim/image_io.h"
-#include "capsim/parser.h"
+#include "capsim/image/image_io.h"
+#include "capsim/scene/parser.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 #include "report/html_report.h"
 #include "report/sim_report.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // solid as its STL export of the same model, several objects are their union,
 // and every bad file is refused at its path (and line, for AMF's XML).
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "support/cli_run.h"
 
 #include <fmt/format.h>

@@ -3,7 +3,7 @@
 
 #include "scene/extrusions/openscad_tessellation.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "support/cli_run.h"
 
 #include <fmt/format.h>

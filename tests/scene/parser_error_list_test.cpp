@@ -2,7 +2,7 @@
 // the subset listed at once in file order, and a file cut short reported as
 // ending early.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "support/cli_run.h"
 
 namespace capsim {

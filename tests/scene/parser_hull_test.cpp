@@ -1,7 +1,7 @@
 // hull(), minkowski() and surface(): the meshes they make and every refusal
 // at its FILE:LINE:COL.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "scene/meshes/convex_hull.h"
 #include "support/cli_run.h"
 

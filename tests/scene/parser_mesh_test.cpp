@@ -1,7 +1,7 @@
 // polyhedron() and import() of STL and OFF: the meshes they make, where
 // import() finds its file, and every refusal at its FILE:LINE:COL.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "support/cli_run.h"
 
 #include <fmt/format.h>

@@ -3,7 +3,7 @@
 // and colour conventions, materials, modifiers, real OpenSCAD exports and the
 // project's scene files.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -15,7 +15,7 @@
 #include <string>
 #include <string_view>
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 namespace capsim {
 namespace {

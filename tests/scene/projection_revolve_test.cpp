@@ -8,7 +8,7 @@
 #include "scene/extrusions/revolved_mesh.h"
 #include "scene/regions/region_2d.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "scene/reading/scene_lexer.h"
 #include "support/cli_run.h"
 #include "support/openscad_svg.h"

@@ -4,8 +4,8 @@
 
 #include "scene/regions/region_2d.h"
 
-#include "capsim/parser.h"
-#include "capsim/scene_limits.h"
+#include "capsim/scene/parser.h"
+#include "capsim/scene/scene_limits.h"
 #include "scene/regions/dxf_import.h"
 #include "scene/reading/scene_lexer.h"
 #include "support/cli_run.h"

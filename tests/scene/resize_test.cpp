@@ -2,7 +2,7 @@
 // of the children, read as a transform of the exact solids under it; and
 // every refusal at its FILE:LINE:COL.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "support/scene_refusal.h"
 
 #include <fmt/format.h>

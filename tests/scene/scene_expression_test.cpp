@@ -5,7 +5,7 @@
 // same expression (checked with echo() of the expression, or of `expr ==
 // value` where echo's 6 digits cannot tell).
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@
 #include <string>
 #include <string_view>
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 namespace capsim {
 namespace {

@@ -7,7 +7,7 @@
 
 #include "scene/regions/svg_import.h"
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "support/cli_run.h"
 #include "support/openscad_svg.h"
 #include "support/polygon2d_area.h"

@@ -5,8 +5,8 @@
 #include "machine/parts/balance.h"
 #include "machine/machine.h"
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <fmt/core.h>
 

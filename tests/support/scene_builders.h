@@ -1,7 +1,7 @@
 #pragma once
 // Small scenes built in code for unit tests.
 
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 

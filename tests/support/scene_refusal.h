@@ -1,7 +1,7 @@
 #pragma once
 // The message a scene text is refused with, for tests of located errors.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
 #include <string>
 #include <string_view>

@@ -3,8 +3,8 @@
 // objects that moves a step to the right on every frame, and the tracers a
 // sequence run takes.
 
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_builders.h"
 
 #include <memory>

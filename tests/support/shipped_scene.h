@@ -1,8 +1,8 @@
 #pragma once
 // A shipped model (scenes/NAME) parsed and prepared at a screen size.
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <string>
 

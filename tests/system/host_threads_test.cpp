@@ -1,7 +1,7 @@
 // parallel_rows: every row once, whatever the threads; on one thread, in order
 // on the calling thread, outside any TBB arena (the scheduler not started).
 
-#include "capsim/host_threads.h"
+#include "capsim/system/host_threads.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The memory limits a run is checked against.
 
-#include "capsim/memory_limit.h"
+#include "capsim/system/memory_limit.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // resolve_output_target: what an output path leads to, and PendingFile
 // writing through a FIFO or a character device.
 
-#include "capsim/output_target.h"
-#include "capsim/pending_file.h"
+#include "capsim/system/output_target.h"
+#include "capsim/system/pending_file.h"
 #include "support/cli_run.h"
 
 #include <fcntl.h>

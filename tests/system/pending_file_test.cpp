@@ -1,6 +1,6 @@
 // PendingFile: an output that appears whole or not at all.
 
-#include "capsim/pending_file.h"
+#include "capsim/system/pending_file.h"
 #include "support/cli_run.h"
 
 #include <stdexcept>

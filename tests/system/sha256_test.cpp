@@ -1,7 +1,7 @@
 // sha256_hex: FIPS 180-4's example digests, every padding case around a block
 // boundary checked against sha256sum's figures, and a long input.
 
-#include "capsim/sha256.h"
+#include "capsim/system/sha256.h"
 
 #include "support/cli_run.h"
 

@@ -3,7 +3,7 @@
 // naming it and what needs it. capsim itself starts without the libraries it
 // opens this way.
 
-#include "capsim/shared_library.h"
+#include "capsim/system/shared_library.h"
 
 #include "support/cli_run.h"
 

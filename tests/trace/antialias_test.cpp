@@ -1,11 +1,11 @@
-// Whitted's adaptive antialiasing on the host (capsim/antialias.h): sample
+// Whitted's adaptive antialiasing on the host (capsim/trace/antialias.h): sample
 // counts, independence of how the screen is cut, and coverage against the exact
 // area on analytic scenes.
 
-#include "capsim/antialias.h"
-#include "capsim/parser.h"
-#include "capsim/render.h"
-#include "capsim/srgb.h"
+#include "capsim/image/srgb.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/antialias.h"
+#include "capsim/trace/render.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

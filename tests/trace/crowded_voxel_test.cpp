@@ -4,7 +4,7 @@
 // hits to the bit and the same operation counts, on random scenes on coarse
 // grids.
 
-#include "capsim/tracer.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

@@ -4,7 +4,7 @@
 // and NaN direction components, origins outside the universe and on its faces,
 // empty and reversed [tmin, tmax]): the voxels and t values must agree to the bit.
 
-#include "capsim/dda.h"
+#include "capsim/trace/dda.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // exact solids each 2-D leaf becomes, the 2-D tree as the 3-D one with the caps cut once, and
 // every refusal at its FILE:LINE:COL.
 
-#include "capsim/parser.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_refusal.h"
 
 #include <gtest/gtest.h>

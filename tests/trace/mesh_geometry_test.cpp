@@ -2,9 +2,9 @@
 // brute force over every triangle, and on lines through shared edges and
 // vertices), and meshes inside the tracer's CSG evaluation.
 
-#include "capsim/mesh_geometry.h"
-#include "capsim/render.h"
-#include "capsim/tracer.h"
+#include "capsim/trace/mesh_geometry.h"
+#include "capsim/trace/render.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

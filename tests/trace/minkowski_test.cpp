@@ -3,8 +3,8 @@
 // children's convex parts, written out by hand, draws; and every refusal at
 // its FILE:LINE:COL.
 
-#include "capsim/parser.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/tracer.h"
 #include "support/cli_run.h"
 #include "support/scene_refusal.h"
 

@@ -6,10 +6,10 @@
 // and operators and is framed by the same default view, because the rails
 // bound every frame, and the bars slide along their rails in every frame.
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/scene.h"
-#include "capsim/status_tree.h"
+#include "capsim/scene/parser.h"
+#include "capsim/scene/scene.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/status_tree.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -2,10 +2,10 @@
 // GLView.cc): the default gimbal view, both --camera forms, --viewall and
 // --autocenter, and the orthographic tracer's parallel rays.
 
-#include "capsim/csg_bounds.h"
-#include "capsim/openscad_camera.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/trace/csg_bounds.h"
+#include "capsim/trace/openscad_camera.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

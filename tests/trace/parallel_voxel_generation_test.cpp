@@ -1,7 +1,7 @@
 // Voxel generation places primitives on several threads: the grid, its counts
 // and its order must be exactly the one-thread result for every thread count.
 
-#include "capsim/voxel_grid.h"
+#include "capsim/trace/voxel_grid.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

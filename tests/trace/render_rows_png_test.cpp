@@ -1,9 +1,9 @@
 // The trace's 8-bit rows against the image library's PNG: the path `capsim
 // render` takes to a PNG gives the file a Framebuffer gives.
 
-#include "capsim/image_io.h"
-#include "capsim/render.h"
-#include "capsim/srgb.h"
+#include "capsim/image/image_io.h"
+#include "capsim/image/srgb.h"
+#include "capsim/trace/render.h"
 #include "support/cli_run.h"
 
 #include <OpenImageIO/imageio.h>

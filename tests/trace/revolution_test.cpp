@@ -3,9 +3,9 @@
 // long-double reference), partial turns cut by their wedge, shapes at x < 0
 // turned as OpenSCAD turns them, and every refusal at its FILE:LINE:COL.
 
-#include "capsim/parser.h"
-#include "capsim/polynomial_roots.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/polynomial_roots.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_refusal.h"
 
 #include <gtest/gtest.h>

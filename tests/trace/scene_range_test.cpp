@@ -1,8 +1,8 @@
-// The scene-relative range (capsim/scene_range.h), checked as a scene is
+// The scene-relative range (capsim/trace/scene_range.h), checked as a scene is
 // prepared: located at the primitive or the camera.
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <gtest/gtest.h>
 

@@ -2,8 +2,8 @@
 // then normals, then shading); it must give what shade_primary gives ray by
 // ray, to the bit, with the same operation counts.
 
-#include "capsim/parser.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

@@ -6,7 +6,7 @@
 // unions is counted without being made and written only when the tree is
 // read or toggled again.
 
-#include "capsim/status_tree.h"
+#include "capsim/trace/status_tree.h"
 
 #include "support/scene_builders.h"
 

@@ -1,11 +1,11 @@
 // Unit tests of the tracer's parts: exact intersections, the 3DDDA, the status
 // tree, voxel generation and the operation counts of whole rays.
 
-#include "capsim/dda.h"
-#include "capsim/parser.h"
-#include "capsim/render.h"
-#include "capsim/status_tree.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/dda.h"
+#include "capsim/trace/render.h"
+#include "capsim/trace/status_tree.h"
+#include "capsim/trace/tracer.h"
 #include "support/scene_builders.h"
 
 #include <gtest/gtest.h>

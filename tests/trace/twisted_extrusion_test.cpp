@@ -2,7 +2,7 @@
 // tessellation, checked against its STL export and against the exact
 // twisted surface.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 #include "scene/extrusions/twisted_extrusion.h"
 #include "support/cli_run.h"
 

@@ -1,7 +1,7 @@
 #include "machine/costs/cost_profile.h"
 
 #include "machine/costs/builtin_profiles.h"
-#include "capsim/sha256.h"
+#include "capsim/system/sha256.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

@@ -7,7 +7,7 @@
 #include "kernel/cycles.h"
 #include "machine/costs/cost_terms.h"
 
-#include "capsim/op_counts.h"
+#include "capsim/trace/op_counts.h"
 
 #include <array>
 #include <cstdint>

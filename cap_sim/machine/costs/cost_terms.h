@@ -6,7 +6,7 @@
 // table: adding a counted operation is one row here (and its count in the
 // tracer's OpCounts, or the host's VoxelGenCounts).
 
-#include "capsim/op_counts.h"
+#include "capsim/trace/op_counts.h"
 
 #include <array>
 #include <cstdint>

@@ -4,7 +4,7 @@
 #include "machine/parts/frame_protocol.h"
 #include "machine/unit_memory.h"
 
-#include "capsim/antialias.h"
+#include "capsim/trace/antialias.h"
 
 #include <fmt/core.h>
 

@@ -15,7 +15,7 @@
 #include "machine/traced_cells.h"
 #include "machine/parts/window_controller.h"
 
-#include "capsim/render.h"
+#include "capsim/trace/render.h"
 
 #include <cstddef>
 #include <functional>

@@ -1,6 +1,6 @@
 #include "machine/parts/corner_exchange.h"
 
-#include "capsim/antialias.h"
+#include "capsim/trace/antialias.h"
 
 #include <algorithm>
 #include <stdexcept>

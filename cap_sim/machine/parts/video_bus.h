@@ -5,7 +5,7 @@
 
 #include "machine/parts/window_controller.h"
 
-#include "capsim/render.h"
+#include "capsim/trace/render.h"
 
 #include <tbb/parallel_for.h>
 

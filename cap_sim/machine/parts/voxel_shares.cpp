@@ -1,6 +1,6 @@
 #include "machine/parts/voxel_shares.h"
 
-#include "capsim/voxel_grid.h"
+#include "capsim/trace/voxel_grid.h"
 
 #include <fmt/core.h>
 

@@ -25,8 +25,8 @@
 #include "machine/costs/cost_profile.h"
 #include "machine/scene_footprint.h"
 
-#include "capsim/op_counts.h"
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/op_counts.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <cstdint>
 #include <optional>

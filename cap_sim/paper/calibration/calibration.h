@@ -10,7 +10,7 @@
 #include "machine/costs/cost_profile.h"
 #include "paper/calibration/joint_fit.h"
 
-#include "capsim/op_counts.h"
+#include "capsim/trace/op_counts.h"
 
 #include <optional>
 #include <string>

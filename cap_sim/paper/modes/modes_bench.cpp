@@ -2,7 +2,7 @@
 
 #include "report/svg_plot.h"
 
-#include "capsim/host_threads.h"
+#include "capsim/system/host_threads.h"
 
 #include <fmt/core.h>
 

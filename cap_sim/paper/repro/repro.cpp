@@ -3,9 +3,9 @@
 #include "paper/repro/paper_figures.h"
 #include "paper/simulate_command.h"
 
-#include "capsim/parser.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/scene/parser.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 
 #include <fmt/core.h>
 

@@ -1,8 +1,8 @@
 #include "paper/sweeps/sweep_spec.h"
 
-#include "capsim/antialias.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/voxel_grid.h"
+#include "capsim/trace/antialias.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/voxel_grid.h"
 #include "machine/costs/cost_profile.h"
 
 #include <fmt/core.h>

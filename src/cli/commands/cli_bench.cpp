@@ -2,7 +2,7 @@
 // exactly with a stored baseline (docs/benchmarks.md): --baseline FILE, or the
 // shipped one for the screen (shipped_data.h), or none.
 
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 #include "cli/commands/cli_commands.h"
 #include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"

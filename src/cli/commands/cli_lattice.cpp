@@ -1,6 +1,6 @@
 // `capsim lattice`: writes a sphere lattice of the paper's Table 4-2 as a scene file.
 
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 #include "cli/commands/cli_commands.h"
 #include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"

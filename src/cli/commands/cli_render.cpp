@@ -1,7 +1,7 @@
 // `capsim render`: the tracer alone, on the host.
 
-#include "capsim/image_io.h"
-#include "capsim/render.h"
+#include "capsim/image/image_io.h"
+#include "capsim/trace/render.h"
 #include "cli/commands/cli_commands.h"
 #include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"

@@ -2,7 +2,7 @@
 // written as a Markdown report (reproduction.md in the current directory by
 // default; the project's own is docs/reproduction.md) with its plots.
 
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 #include "cli/commands/cli_commands.h"
 #include "cli/options/cli_options.h"
 #include "cli/cli_outputs.h"

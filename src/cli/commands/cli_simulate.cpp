@@ -14,8 +14,8 @@
 #include "report/sim_report.h"
 #include "report/text_output.h"
 
-#include "capsim/image_io.h"
-#include "capsim/sha256.h"
+#include "capsim/image/image_io.h"
+#include "capsim/system/sha256.h"
 
 #include <fmt/core.h>
 

@@ -15,7 +15,7 @@
 #include "paper/sweeps/sweep_records.h"
 #include "report/text_output.h"
 
-#include "capsim/host_threads.h"
+#include "capsim/system/host_threads.h"
 
 #include <fmt/core.h>
 

@@ -1,8 +1,8 @@
 #include "cli/options/cli_options.h"
 
-#include "capsim/image_io.h"
-#include "capsim/memory_limit.h"
-#include "capsim/parser.h"
+#include "capsim/image/image_io.h"
+#include "capsim/scene/parser.h"
+#include "capsim/system/memory_limit.h"
 #include "cli/options/cli_usage.h"
 #include "cli/console.h"
 #include "cli/scad_export.h"

@@ -2,9 +2,9 @@
 // Options shared by `capsim render` and `capsim simulate`: the scene, the output
 // image, the image size, the grid, host threads and primary-only tracing.
 
-#include "capsim/antialias.h"
-#include "capsim/prepared_scene.h"
-#include "capsim/tracer.h"
+#include "capsim/trace/antialias.h"
+#include "capsim/trace/prepared_scene.h"
+#include "capsim/trace/tracer.h"
 #include "cli/options/openscad_options.h"
 #include "cli/options/option_checks.h"
 

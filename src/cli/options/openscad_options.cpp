@@ -1,6 +1,6 @@
 #include "cli/options/openscad_options.h"
 
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/prepared_scene.h"
 #include "cli/options/cli_options.h"
 #include "cli/options/cli_usage.h"
 

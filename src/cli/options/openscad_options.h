@@ -3,7 +3,7 @@
 // take them, spelt as OpenSCAD spells them (docs/openscad.md): --camera,
 // --viewall, --autocenter, --projection and --imgsize.
 
-#include "capsim/openscad_camera.h"
+#include "capsim/trace/openscad_camera.h"
 #include "cli/options/option_checks.h"
 
 #include <CLI/CLI.hpp>

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "capsim/shared_library.h"
+#include "capsim/system/shared_library.h"
 #endif
 
 namespace capsim::cli {
@@ -19,7 +19,7 @@ namespace {
 bool launched_by_mpi() { return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK"); }
 
 // The MPI library, opened the first time a launcher has started capsim, not
-// at start-up (include/capsim/shared_library.h): it and the libraries it
+// at start-up (include/capsim/system/shared_library.h): it and the libraries it
 // brings (Open MPI's runtime, hwloc, libevent) cost every run their loading,
 // and only a sweep under mpirun calls them. It is the library of the soname
 // the build read (CAPSIM_MPI_SONAME), so the functions are the ones mpi.h

@@ -1,6 +1,6 @@
 #include "cli/sweeps/sweep_run.h"
 
-#include "capsim/tracer.h"
+#include "capsim/trace/tracer.h"
 #include "cli/options/cli_options.h"
 
 #include <memory>

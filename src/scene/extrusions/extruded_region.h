@@ -5,7 +5,7 @@
 // OpenSCAD sweeps it (one slice when straight); the region's even-odd rule
 // makes the solid each path at even depth less the paths directly in it.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 #include "scene/regions/region_2d.h"
 #include "scene/reading/scene_syntax.h"
 

@@ -6,7 +6,7 @@
 // hull() and minkowski() need them: OpenSCAD builds those solids out of
 // these points, so capsim does too.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 #include "scene/reading/scene_syntax.h"
 #include "scene/work_limits.h"
 

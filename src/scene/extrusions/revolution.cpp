@@ -1,7 +1,7 @@
 // The profile of a revolution made ready to trace: edges clipped to the
 // turned half plane and oriented, and the solid's box.
 
-#include "capsim/revolution.h"
+#include "capsim/scene/revolution.h"
 
 #include <algorithm>
 #include <cmath>

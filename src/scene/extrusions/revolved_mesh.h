@@ -9,7 +9,7 @@
 // the two triangles OpenSCAD writes, and a partial turn is closed by the
 // outline itself at both ends.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 #include "scene/extrusions/openscad_tessellation.h"
 #include "scene/regions/clipper_utils.h"
 #include "scene/reading/scene_syntax.h"

@@ -6,7 +6,7 @@
 #include "scene/regions/text_glyphs.h"
 #include "scene/extrusions/twisted_extrusion.h"
 
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
 #include "scene/reading/scene_args.h"
 #include "scene/reading/scene_modules.h"
 

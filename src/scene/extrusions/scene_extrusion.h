@@ -6,7 +6,7 @@
 // or cylinder, a square a box, a polygon a prism or frustum mesh), and the
 // 2-D CSG tree becomes the 3-D one; nothing is tessellated or clipped.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/reading/scene_syntax.h"
 
 #include <vector>

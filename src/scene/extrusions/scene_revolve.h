@@ -6,7 +6,7 @@
 // (revolution.h), the 2-D CSG tree the 3-D one, and 2-D transforms act in
 // the (r, z) half plane before the turn.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/reading/scene_syntax.h"
 
 #include <string_view>

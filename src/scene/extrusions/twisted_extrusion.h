@@ -5,7 +5,7 @@
 // extrudePolygon and add_slice): the outline rotated and scaled at each slice,
 // each quad between two slices split along its shorter diagonal, the caps flat.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 
 #include <glm/glm.hpp>
 

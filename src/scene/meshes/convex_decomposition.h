@@ -6,7 +6,7 @@
 // summed piece by piece. The one translation unit that includes CGAL;
 // CGAL's templates stay out of every other.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 #include "scene/meshes/meshed_solids.h"
 #include "scene/work_limits.h"
 

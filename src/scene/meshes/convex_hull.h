@@ -5,7 +5,7 @@
 // is the same solid, Qhull is a small C library, and CGAL's header-only
 // templates would multiply the build time of the scene layer.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 
 #include <glm/glm.hpp>
 

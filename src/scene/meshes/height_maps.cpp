@@ -2,7 +2,7 @@
 
 #include "scene/meshes/height_maps.h"
 
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
 #include "scene/extrusions/openscad_tessellation.h"
 
 #include <fmt/format.h>

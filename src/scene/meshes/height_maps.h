@@ -3,7 +3,7 @@
 // them: a PNG image (its grey level, 0.2126 R + 0.7152 G + 0.0722 B, scaled
 // to 0 .. 100) or a text .dat file of rows of numbers.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 
 #include <cstddef>
 #include <stdexcept>

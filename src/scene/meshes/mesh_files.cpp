@@ -5,7 +5,7 @@
 #include "scene/meshes/amf_import.h"
 #include "scene/meshes/threemf_import.h"
 
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
 
 #include <fmt/format.h>
 

@@ -2,7 +2,7 @@
 // Mesh files import() reads: STL (ASCII and binary), OFF, AMF and 3MF, as
 // OpenSCAD 2021.01 writes and reads them.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 
 #include <cstddef>
 #include <stdexcept>

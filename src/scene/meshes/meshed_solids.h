@@ -8,8 +8,8 @@
 // a linear_extrude each outline of its region less the paths in it, a
 // rotate_extrude OpenSCAD's mesh of the revolution (scene/extrusions/revolved_mesh.h).
 
-#include "capsim/scene.h"
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/scene.h"
+#include "capsim/scene/triangle_mesh.h"
 #include "scene/meshes/scene_hulls.h"
 #include "scene/reading/scene_syntax.h"
 

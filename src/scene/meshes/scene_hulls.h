@@ -5,7 +5,7 @@
 // them have (scene/extrusions/openscad_tessellation.h, polyhedra, imports,
 // surfaces, linear extrusions as scene/extrusions/extruded_region.h meshes them).
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/reading/scene_syntax.h"
 #include "scene/work_limits.h"
 

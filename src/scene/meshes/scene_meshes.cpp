@@ -3,7 +3,7 @@
 
 #include "scene/meshes/scene_meshes.h"
 
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
 #include "scene/meshes/mesh_files.h"
 #include "scene/reading/scene_args.h"
 

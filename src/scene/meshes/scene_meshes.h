@@ -2,7 +2,7 @@
 // polyhedron() and import(): the calls that make a Mesh primitive. Like
 // scene_modules.h, these read one call only; parser.cpp places the result.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/reading/scene_syntax.h"
 
 #include <cstddef>

@@ -2,7 +2,7 @@
 // surface(file, center, invert, convexity): a height map (scene/meshes/height_maps.h)
 // as a closed Mesh primitive, OpenSCAD's own mesh of it.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/reading/scene_syntax.h"
 
 #include <cstddef>

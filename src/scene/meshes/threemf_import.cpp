@@ -1,6 +1,6 @@
 // 3MF through lib3mf 1.x's C interface (Debian 12 packages 1.8.1, the
 // interface OpenSCAD 2021.01 was built against), opened on the first import
-// rather than at every start (capsim/shared_library.h).
+// rather than at every start (capsim/system/shared_library.h).
 //
 // OpenSCAD reads every mesh object resource of the model and ignores the
 // build: an object no build item names is imported too, a build item's
@@ -10,7 +10,7 @@
 
 #include "scene/meshes/threemf_import.h"
 
-#include "capsim/shared_library.h"
+#include "capsim/system/shared_library.h"
 
 #include <Model/COM/NMR_DLLInterfaces.h>
 #include <fmt/format.h>

@@ -1,7 +1,7 @@
 // Closed triangle meshes from polygon faces: the check that they bound a
 // solid, the triangulation of each face and the orientation of the whole.
 
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
 
 #include <fmt/format.h>
 

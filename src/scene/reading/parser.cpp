@@ -3,9 +3,9 @@
 // tree, builds the CSG nodes and collects camera, lights and background.
 // scene_modules.cpp knows what each call's arguments mean.
 
-#include "capsim/parser.h"
+#include "capsim/scene/parser.h"
 
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
 
 #include <fmt/format.h>
 

@@ -2,7 +2,7 @@
 // Colour names and codes as OpenSCAD's color() accepts them, and the sRGB
 // decoding that turns file colours into the linear values the tracer shades with.
 
-#include "capsim/srgb.h"
+#include "capsim/image/srgb.h"
 
 #include <glm/glm.hpp>
 #include <optional>

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 namespace capsim::scene_file {
 

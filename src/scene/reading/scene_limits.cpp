@@ -1,7 +1,7 @@
 // The range of scene values capsim guarantees to trace correctly: the
 // placement bounds the parser checks.
 
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
 
 #include <algorithm>
 #include <cmath>

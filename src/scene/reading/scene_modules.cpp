@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
 #include "scene/reading/scene_args.h"
 #include "scene/reading/scene_colors.h"
 

@@ -6,7 +6,7 @@
 #include <glm/glm.hpp>
 #include <optional>
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/reading/scene_syntax.h"
 
 namespace capsim::scene_file {

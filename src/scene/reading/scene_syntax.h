@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/reading/scene_lexer.h"
 
 namespace capsim::scene_file {

@@ -1,10 +1,10 @@
 #pragma once
 // The functions of FreeType, HarfBuzz and fontconfig that text() calls, from
 // the libraries opened on the first text() rather than at every start
-// (capsim/shared_library.h): with GLib, Graphite, expat and Brotli, which only
+// (capsim/system/shared_library.h): with GLib, Graphite, expat and Brotli, which only
 // they bring, they were loaded and relocated on every run.
 
-#include "capsim/shared_library.h"
+#include "capsim/system/shared_library.h"
 
 #include <fontconfig/fontconfig.h>
 #include <ft2build.h>

@@ -17,7 +17,7 @@
 // narrower than a cell. The grid has kProjectionGrid cells along the longer
 // side of the solids' box.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/meshes/meshed_solids.h"
 
 #include <glm/glm.hpp>

@@ -4,7 +4,7 @@
 
 #include "scene/regions/scene_projection.h"
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 #include "scene/regions/dxf_import.h"
 #include "scene/regions/hull_2d.h"
 #include "scene/meshes/mesh_files.h"

@@ -1,9 +1,9 @@
 #pragma once
-// The scene-relative part of the range capsim traces (capsim/scene_limits.h
+// The scene-relative part of the range capsim traces (capsim/scene/scene_limits.h
 // gives the whole range and its reasons), checked as a scene is prepared.
 
-#include "capsim/primitive_geometry.h"
-#include "capsim/scene_limits.h"
+#include "capsim/scene/scene_limits.h"
+#include "capsim/trace/primitive_geometry.h"
 
 #include <vector>
 

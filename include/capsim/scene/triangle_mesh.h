@@ -5,7 +5,7 @@
 // triangulated, and oriented so that every triangle runs counter-clockwise
 // seen from outside.
 
-#include "capsim/bounds.h"
+#include "capsim/scene/bounds.h"
 
 #include <glm/glm.hpp>
 

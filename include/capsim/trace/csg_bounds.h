@@ -2,7 +2,7 @@
 // Boxes a view frames a CSG tree by: what the tree leaves (capsim's default
 // view) and what OpenSCAD's preview draws (its --viewall).
 
-#include "capsim/primitive_geometry.h"
+#include "capsim/trace/primitive_geometry.h"
 
 #include <vector>
 

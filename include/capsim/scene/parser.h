@@ -3,7 +3,7 @@
 // plus camera(), light(), material() and background() statements in the same
 // grammar. docs/scene-format.md gives the grammar and the list of refusals.
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 #include <cstddef>
 #include <string>

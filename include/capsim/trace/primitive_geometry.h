@@ -4,11 +4,11 @@
 // in any number of intervals, given as its sorted boundary crossings. The tracer
 // turns both into the crossings that drive the status tree.
 
-#include "capsim/mesh_geometry.h"
-#include "capsim/op_counts.h"
-#include "capsim/ray.h"
-#include "capsim/revolution_geometry.h"
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
+#include "capsim/trace/mesh_geometry.h"
+#include "capsim/trace/op_counts.h"
+#include "capsim/trace/ray.h"
+#include "capsim/trace/revolution_geometry.h"
 
 #include <cmath>
 

@@ -1,7 +1,7 @@
 #pragma once
 // A ray of the tracer.
 
-#include "capsim/bounds.h"
+#include "capsim/scene/bounds.h"
 
 #include <glm/glm.hpp>
 

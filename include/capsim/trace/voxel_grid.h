@@ -1,8 +1,8 @@
 #pragma once
 // The uniform voxel grid and the paper's voxel generation (Algorithm-3).
 
-#include "capsim/op_counts.h"
-#include "capsim/primitive_geometry.h"
+#include "capsim/trace/op_counts.h"
+#include "capsim/trace/primitive_geometry.h"
 
 #include <cstdint>
 #include <span>

@@ -3,7 +3,7 @@
 // --projection) turned into capsim's Camera, so that the same options give the
 // view `openscad -o out.png` gives (docs/openscad.md).
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 #include <string>
 #include <vector>

@@ -12,9 +12,9 @@
 //     thinner than any primitive and far wider than the rounding of any
 //     coordinate (2.2e-16 of it).
 // The scene-relative check runs as the scene is prepared
-// (capsim/scene_range.h).
+// (capsim/trace/scene_range.h).
 
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
 
 #include <glm/glm.hpp>
 

@@ -15,7 +15,7 @@
 // shows, divided by 255, so 0 to 3; the threshold compares with the largest
 // difference over the six pairs of corners (POV-Ray's metric and default 0.3).
 
-#include "capsim/tracer.h"
+#include "capsim/trace/tracer.h"
 
 #include <algorithm>
 #include <array>

@@ -3,9 +3,9 @@
 // voxel grid, and the camera resolved. Immutable once built and shared by every
 // thread and every simulated cell.
 
-#include "capsim/openscad_camera.h"
-#include "capsim/status_tree.h"
-#include "capsim/voxel_grid.h"
+#include "capsim/trace/openscad_camera.h"
+#include "capsim/trace/status_tree.h"
+#include "capsim/trace/voxel_grid.h"
 
 #include <cstdint>
 #include <optional>

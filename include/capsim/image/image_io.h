@@ -10,8 +10,8 @@
 // 250 shared libraries at every start of the program (about half a second),
 // which would cost more than tracing a megapixel.
 
-#include "capsim/framebuffer.h"
-#include "capsim/pending_file.h"
+#include "capsim/image/framebuffer.h"
+#include "capsim/system/pending_file.h"
 
 #include <cstdint>
 #include <memory>

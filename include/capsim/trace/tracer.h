@@ -3,8 +3,8 @@
 // voxel (3DDDA + status tree), and Whitted shading on top of it. Pure: the same
 // ray always gives the same answer and the same operation counts.
 
-#include "capsim/dda.h"
-#include "capsim/prepared_scene.h"
+#include "capsim/trace/dda.h"
+#include "capsim/trace/prepared_scene.h"
 
 #include <cstdint>
 #include <span>

@@ -7,9 +7,9 @@
 // order, alternate in and out (even-odd); a partial turn keeps the part of
 // them inside its wedge, whose two half planes are the caps.
 
-#include "capsim/mesh_geometry.h"
-#include "capsim/op_counts.h"
-#include "capsim/revolution.h"
+#include "capsim/scene/revolution.h"
+#include "capsim/trace/mesh_geometry.h"
+#include "capsim/trace/op_counts.h"
 
 #include <vector>
 

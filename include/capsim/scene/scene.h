@@ -3,9 +3,9 @@
 // materials and background. Geometry is kept exact (quadrics and planes, and
 // the planar faces of meshes); nothing is tessellated.
 
-#include "capsim/bounds.h"
-#include "capsim/revolution.h"
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/bounds.h"
+#include "capsim/scene/revolution.h"
+#include "capsim/scene/triangle_mesh.h"
 
 #include <glm/glm.hpp>
 

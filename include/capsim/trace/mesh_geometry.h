@@ -8,9 +8,9 @@
 // hierarchy over the triangles, built once per mesh, picks the triangles worth
 // testing.
 
-#include "capsim/op_counts.h"
-#include "capsim/ray.h"
-#include "capsim/triangle_mesh.h"
+#include "capsim/scene/triangle_mesh.h"
+#include "capsim/trace/op_counts.h"
+#include "capsim/trace/ray.h"
 
 #include <cstdint>
 #include <memory>

@@ -6,7 +6,7 @@
 // cylinder or annulus, each ellipse (a placed circle) into a torus-like
 // quartic surface; nothing is tessellated.
 
-#include "capsim/bounds.h"
+#include "capsim/scene/bounds.h"
 
 #include <glm/glm.hpp>
 

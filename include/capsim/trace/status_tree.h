@@ -5,8 +5,8 @@
 // A boundary crossing toggles its leaf and propagates toward the root, stopping at
 // the first node whose StatusSelf does not change.
 
-#include "capsim/op_counts.h"
-#include "capsim/scene.h"
+#include "capsim/scene/scene.h"
+#include "capsim/trace/op_counts.h"
 
 #include <cstdint>
 #include <vector>

@@ -2,10 +2,10 @@
 // Renders every pixel of a prepared scene with the tracer (host threads via TBB;
 // the result does not depend on the thread count).
 
-#include "capsim/antialias.h"
-#include "capsim/framebuffer.h"
-#include "capsim/progress.h"
-#include "capsim/tracer.h"
+#include "capsim/image/framebuffer.h"
+#include "capsim/system/progress.h"
+#include "capsim/trace/antialias.h"
+#include "capsim/trace/tracer.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -61,7 +61,7 @@ using RowSink = std::function<void(int j, std::span<const PixelSample> row)>;
 // rather than a whole Framebuffer. threads: 0 = all hardware threads. stats, if
 // given, receives the summed counts (equal for any thread count); progress, if
 // given, advances by render_work(...) in all. With aa.depth >= 1 every pixel is
-// antialiased from the screen's corner samples (capsim/antialias.h).
+// antialiased from the screen's corner samples (capsim/trace/antialias.h).
 void render_rows(const Tracer& tracer, int threads, const RowSink& store,
                  RenderStats* stats = nullptr, Progress* progress = nullptr,
                  const AntialiasOptions& aa = {});

@@ -15,7 +15,7 @@
 // target before commit(). Creating the temporary file first proves, before any
 // work, that the content has somewhere to go.
 
-#include "capsim/output_target.h"
+#include "capsim/system/output_target.h"
 
 #include <string>
 #include <vector>

@@ -2,7 +2,7 @@
 // The parametric 3DDDA (Algorithm-2): walks the voxels a ray passes through, in
 // order, with two additions and a comparison per step and no division.
 
-#include "capsim/voxel_grid.h"
+#include "capsim/trace/voxel_grid.h"
 
 #include <algorithm>
 
