@@ -69,7 +69,8 @@ class LayerCheck {
     // Tests sit in the layer they test; the oracle and the fuzz targets test the tracer.
     if (dir.rfind("tests/", 0) == 0) {
       const std::string sub = dir.substr(6);
-      if (layers_.count(sub)) return sub;
+      const std::string top = sub.substr(0, sub.find('/'));  // tests/cli/render: cli, in a stage folder
+      if (layers_.count(top)) return top;
       if (sub == "oracle" || sub == "fuzz") return "trace";
     }
     return std::nullopt;
@@ -183,6 +184,9 @@ TEST(Layers, TheCheckFindsAnIncludeThatRunsBackUp) {
   EXPECT_EQ(check.problems("cap_sim/machine/parts/cell.cpp", "#include \"cycles.h\"\n").size(), 1u);
   // Test helpers belong to the tests only.
   EXPECT_TRUE(check.problems("tests/machine/x_test.cpp", "#include \"support/cli_run.h\"\n").empty());
+  // A test in a stage folder of its layer's tests is held to that layer.
+  EXPECT_TRUE(check.problems("tests/cli/render/x_test.cpp", "#include \"paper/experiment_run.h\"\n").empty());
+  EXPECT_EQ(check.problems("tests/trace/stage/x_test.cpp", "#include \"machine/parts/cell.h\"\n").size(), 1u);
   EXPECT_EQ(check.problems("src/cli/main.cpp", "#include \"support/cli_run.h\"\n").size(), 1u);
 }
 
