@@ -3,7 +3,6 @@
 #include "capsim/system/host_threads.h"
 
 #include <libdeflate.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <zlib.h>
 
 #include <algorithm>
@@ -274,9 +273,9 @@ ZlibStream zlib_compress_in_bands(std::span<const unsigned char> data, int threa
   std::vector<std::size_t> written(bands);
   std::vector<std::uint32_t> adler(bands);
 
-  tbb::enumerable_thread_specific<BandCompressor> compressors;
-  parallel_rows(threads, static_cast<int>(bands), [&](const tbb::blocked_range<int>& range) {
-    BandCompressor& compressor = compressors.local();
+  parallel_rows_with(
+      threads, static_cast<int>(bands), [] { return BandCompressor(); },
+      [&](const tbb::blocked_range<int>& range, BandCompressor& compressor) {
     for (int i = range.begin(); i != range.end(); ++i) {
       const auto b = static_cast<std::size_t>(i);
       const std::span<unsigned char> room(stream.bytes.get() + room_begin[b], room_begin[b + 1] - room_begin[b]);

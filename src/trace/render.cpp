@@ -4,7 +4,6 @@
 #include "capsim/system/host_threads.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 
 namespace capsim {
 
@@ -50,10 +49,9 @@ CornerSamples trace_corners(const Tracer& tracer, int threads, const CornerCostS
   corners.width = cam.width;
   corners.height = cam.height;
   corners.samples.resize(static_cast<std::size_t>(cam.width + 1) * (cam.height + 1));
-  tbb::enumerable_thread_specific<ShadedRowWorkspace> workspaces(
-      [&] { return ShadedRowWorkspace(tracer, cam.width + 1); });
-  parallel_rows(threads, cam.height + 1, [&](const tbb::blocked_range<int>& rows) {
-    ShadedRowWorkspace& w = workspaces.local();
+  parallel_rows_with(
+      threads, cam.height + 1, [&] { return ShadedRowWorkspace(tracer, cam.width + 1); },
+      [&](const tbb::blocked_range<int>& rows, ShadedRowWorkspace& w) {
     for (int y = rows.begin(); y != rows.end(); ++y) {
       // trace_screen_sample(tracer, x, y, scratch, ops) for the row's corners,
       // from the rays made already
@@ -85,10 +83,9 @@ void render_rows(const Tracer& tracer, int threads, const RowSink& store, Render
         },
         progress);
   }
-  tbb::enumerable_thread_specific<PixelRowWorkspace> workspaces(
-      [&] { return PixelRowWorkspace(tracer, cam.width); });
-  parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
-    PixelRowWorkspace& w = workspaces.local();
+  parallel_rows_with(
+      threads, cam.height, [&] { return PixelRowWorkspace(tracer, cam.width); },
+      [&](const tbb::blocked_range<int>& rows, PixelRowWorkspace& w) {
     for (int j = rows.begin(); j != rows.end(); ++j) {
       OpCounts& ops = row_ops[j];
       if (aa.depth == 0) {

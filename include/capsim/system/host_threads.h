@@ -5,6 +5,7 @@
 // writer over its image data's bands). The output never depends on them.
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -32,6 +33,23 @@ void parallel_rows(int threads, int count, Body body) {
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<int>(0, count), [&](const tbb::blocked_range<int>& rows) { body(rows); });
   });
+}
+
+// parallel_rows with each thread's own workspace: body(rows, workspace), the
+// workspace made by make() on the thread's first rows and kept for its
+// others. On one thread it is a plain local: TBB's per-thread storage
+// allocates through TBB's allocator, whose library TBB opens on that first
+// use (docs/performance.md), and a run on one thread need not open it.
+template <class Make, class Body>
+void parallel_rows_with(int threads, int count, Make make, Body body) {
+  if (threads == 1) {
+    if (count <= 0) return;
+    auto workspace = make();
+    parallel_rows(1, count, [&](const tbb::blocked_range<int>& rows) { body(rows, workspace); });
+    return;
+  }
+  tbb::enumerable_thread_specific<decltype(make())> workspaces(make);
+  parallel_rows(threads, count, [&](const tbb::blocked_range<int>& rows) { body(rows, workspaces.local()); });
 }
 
 }  // namespace capsim

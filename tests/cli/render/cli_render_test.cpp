@@ -129,6 +129,27 @@ TEST(CliRender, TimingsNameEachStageOnceAndChangeNoByte) {
   }
 }
 
+// A render to PNG on one thread runs without TBB's scheduler, and without
+// its per-thread storage, which has TBB open its allocator library on first
+// use (docs/performance.md): the loader's log names no library TBB opens. On
+// two threads it names some, so the check sees them.
+TEST(CliRender, OnOneThreadTbbOpensNoLibrary) {
+  TempDir dir;
+  const std::string scene = scene_path("balls.csg");
+  const std::regex opened_by_tbb(R"(dynamically loaded by \S*libtbb)");
+  for (const char* extra : {"", " --aa 1"}) {
+    const RunResult one = run_capsim("render " + scene + " -o " + (dir / "one.png") + " --size 24x16 --threads 1" + extra,
+                                     dir, "export LD_DEBUG=files;");
+    ASSERT_EQ(one.status, 0) << one.err;
+    EXPECT_FALSE(std::regex_search(one.err, opened_by_tbb)) << extra << ": " << one.err;
+    const RunResult two = run_capsim("render " + scene + " -o " + (dir / "two.png") + " --size 24x16 --threads 2" + extra,
+                                     dir, "export LD_DEBUG=files;");
+    ASSERT_EQ(two.status, 0) << two.err;
+    EXPECT_TRUE(std::regex_search(two.err, opened_by_tbb)) << extra << ": " << two.err;
+    EXPECT_TRUE(read_file(dir / "one.png") == read_file(dir / "two.png")) << extra;
+  }
+}
+
 TEST(CliRender, PrimaryOnlyDropsShadowsAndSecondaryRays) {
   TempDir dir;
   const std::string scene = scene_path("balls.csg");
