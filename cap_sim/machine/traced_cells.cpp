@@ -467,9 +467,9 @@ ScreenTrace trace_screen(const Tracer& tracer, const AntialiasOptions& aa, int t
   // Antialiased pixels trace from the corners; only unantialiased rows are
   // made as rows of rays, and shaded as rows.
   const int row_rays = aa.depth == 0 ? cam.width : 0;
-  tbb::enumerable_thread_specific<ShadedRowWorkspace> workspaces([&] { return ShadedRowWorkspace(tracer, row_rays); });
-  parallel_rows(threads, cam.height, [&](const tbb::blocked_range<int>& rows) {
-    ShadedRowWorkspace& w = workspaces.local();
+  parallel_rows_with(
+      threads, cam.height, [&] { return ShadedRowWorkspace(tracer, row_rays); },
+      [&](const tbb::blocked_range<int>& rows, ShadedRowWorkspace& w) {
     Tracer::Scratch& s = w.scratch;
     for (int y = rows.begin(); y != rows.end(); ++y) {
       const std::size_t first = static_cast<std::size_t>(y) * cam.width;
