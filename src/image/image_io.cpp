@@ -9,6 +9,7 @@
 #include <png.h>
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <cerrno>
 #include <cmath>
@@ -20,6 +21,7 @@
 #include <filesystem>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <stdexcept>
 
 namespace capsim {
@@ -38,11 +40,18 @@ std::string lower_extension(const std::string& path) {
 PngScanlines png_scanlines(int width, int height, const unsigned char* rgb) {
   PngScanlines image(width, height);
   const std::size_t row_bytes = static_cast<std::size_t>(width) * 3;
-  for (int j = 0; j < height; ++j) {
-    std::memcpy(image.row(j), rgb + j * row_bytes, row_bytes);
-    image.filter_row(j);
-  }
+  for (int j = 0; j < height; ++j) image.put_row(j, {rgb + j * row_bytes, row_bytes});
   return image;
+}
+
+// Bytes [from, to) of a row's scanline under the Sub filter, rgb being the
+// row's pixels: byte 0 is the filter type, byte k > 0 is rgb[k - 1] less the
+// same channel of the pixel to its left (none for the first pixel).
+void put_sub_filtered(std::span<const unsigned char> rgb, std::size_t from, std::size_t to, unsigned char* out) {
+  std::size_t k = from;
+  if (k == 0 && k < to) out[k++ - from] = 1;  // filter type Sub
+  for (; k < to && k <= 3; ++k) out[k - from] = rgb[k - 1];
+  for (; k < to; ++k) out[k - from] = static_cast<unsigned char>(rgb[k - 1] - rgb[k - 4]);
 }
 
 // Where libpng's output goes, and what went wrong: the first write error's
@@ -104,10 +113,8 @@ std::string png_write_chunks(PngSink& sink, int width, int height, std::span<con
 }
 
 // Writes to out's temporary file; messages name its target.
-void write_png_file(const PendingFile& out, const PngScanlines& image, int threads) {
+void write_png_file(const PendingFile& out, int width, int height, const ZlibStream& idat) {
   const std::string& path = out.target();
-  const int width = image.width(), height = image.height();
-  const ZlibStream idat = zlib_compress_in_bands(image.filtered(), threads);
   std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
   if (!f) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
   PngSink sink{f, 0, ""};
@@ -180,29 +187,90 @@ bool is_supported_image_path(const std::string& path) {
 
 bool is_png_path(const std::string& path) { return lower_extension(path) == ".png"; }
 
+// The bands of a PngScanlines' image data: each band's room while its rows
+// come in, and the compressed stream they go to.
+struct PngScanlines::Bands {
+  explicit Bands(std::uint64_t size)
+      : writer(size), filled(std::make_unique<std::atomic<std::size_t>[]>(writer.bands())), rooms(writer.bands()) {}
+
+  // Band b's room, taken when its first bytes come.
+  unsigned char* room(std::size_t b) {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (!rooms[b]) {
+      if (spare.empty()) {
+        rooms[b] = std::make_unique_for_overwrite<unsigned char[]>(writer.band_bytes());
+      } else {
+        rooms[b] = std::move(spare.back());
+        spare.pop_back();
+      }
+    }
+    return rooms[b].get();
+  }
+
+  // Adds n bytes put into band b's room; the thread that makes it whole
+  // compresses it and leaves the room for a later band. Each thread adds
+  // after writing, so the last to add sees every thread's bytes.
+  void filled_by(std::size_t b, std::size_t n) {
+    const std::size_t size = writer.band_size(b);
+    if (filled[b].fetch_add(n, std::memory_order_acq_rel) + n != size) return;
+    unsigned char* data;
+    {
+      const std::lock_guard<std::mutex> lock(mutex);
+      data = rooms[b].get();
+    }
+    writer.compress(b, {data, size});
+    const std::lock_guard<std::mutex> lock(mutex);
+    spare.push_back(std::move(rooms[b]));
+  }
+
+  ZlibBandWriter writer;
+  std::unique_ptr<std::atomic<std::size_t>[]> filled;  // bytes put into each band
+  std::mutex mutex;                                     // guards rooms and spare
+  std::vector<std::unique_ptr<unsigned char[]>> rooms;  // of the bands filling
+  std::vector<std::unique_ptr<unsigned char[]>> spare;  // of bands compressed
+};
+
 PngScanlines::PngScanlines(int width, int height)
     : width_(width),
       height_(height),
-      data_(std::make_unique_for_overwrite<unsigned char[]>(static_cast<std::size_t>(bytes(width, height)))),
-      row_filtered_(static_cast<std::size_t>(height), 0) {}
+      bands_(std::make_unique<Bands>(bytes(width, height))),
+      row_put_(static_cast<std::size_t>(height), 0) {}
+
+PngScanlines::~PngScanlines() = default;
+PngScanlines::PngScanlines(PngScanlines&&) noexcept = default;
+PngScanlines& PngScanlines::operator=(PngScanlines&&) noexcept = default;
 
 std::uint64_t PngScanlines::bytes(int width, int height) {
   return (static_cast<std::uint64_t>(width) * 3 + 1) * static_cast<std::uint64_t>(height);
 }
 
-void PngScanlines::filter_row(int j) {
-  unsigned char* p = row(j);
-  p[-1] = 1;  // filter type Sub
-  // From the right, so that each byte's left neighbour is still unfiltered.
-  for (std::size_t k = 3 * static_cast<std::size_t>(width_); k-- > 3;)
-    p[k] = static_cast<unsigned char>(p[k] - p[k - 3]);
-  row_filtered_[static_cast<std::size_t>(j)] = 1;
+void PngScanlines::put_row(int j, std::span<const unsigned char> rgb) {
+  const std::size_t stride = 3 * static_cast<std::size_t>(width_) + 1;
+  if (j < 0 || j >= height_ || rgb.size() + 1 != stride)
+    throw std::logic_error(fmt::format("PNG scanlines: row {} of {} bytes for a {}x{} image", j, rgb.size(),
+                                       width_, height_));
+  if (row_put_[static_cast<std::size_t>(j)]) throw std::logic_error(fmt::format("PNG scanlines: row {} put twice", j));
+  row_put_[static_cast<std::size_t>(j)] = 1;
+  const std::size_t band = bands_->writer.band_bytes();
+  const std::uint64_t begin = static_cast<std::uint64_t>(j) * stride;
+  // The row's bytes in each band they fall in, the band's offset to the row's.
+  for (std::size_t k = 0; k < stride;) {
+    const std::uint64_t at = begin + k;
+    const auto b = static_cast<std::size_t>(at / band);
+    const auto offset = static_cast<std::size_t>(at - static_cast<std::uint64_t>(b) * band);
+    const std::size_t n = std::min(band - offset, stride - k);
+    put_sub_filtered(rgb, k, k + n, bands_->room(b) + offset);
+    bands_->filled_by(b, n);
+    k += n;
+  }
 }
 
-std::span<const unsigned char> PngScanlines::filtered() const {
-  if (std::find(row_filtered_.begin(), row_filtered_.end(), 0) != row_filtered_.end())
-    throw std::logic_error("PNG scanlines: a row was not filtered");
-  return {data_.get(), static_cast<std::size_t>(bytes(width_, height_))};
+void write_png(PendingFile& out, PngScanlines& image) {
+  if (std::find(image.row_put_.begin(), image.row_put_.end(), 0) != image.row_put_.end())
+    throw std::logic_error("PNG scanlines: a row was not put");
+  const ZlibStream idat = image.bands_->writer.finish();
+  image.bands_.reset();
+  write_png_file(out, image.width(), image.height(), idat);
 }
 
 std::uint64_t write_png_memory(int width, int height) {
@@ -223,10 +291,9 @@ void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<u
   if (rgb.size() != static_cast<std::size_t>(width) * height * 3)
     throw std::logic_error(
         fmt::format("{}: {} bytes for a {}x{} RGB image", out.target(), rgb.size(), width, height));
-  write_png_file(out, png_scanlines(width, height, rgb.data()), 1);
+  PngScanlines image = png_scanlines(width, height, rgb.data());
+  write_png(out, image);
 }
-
-void write_png(PendingFile& out, const PngScanlines& image, int threads) { write_png_file(out, image, threads); }
 
 void write_png_rgb8(const std::string& path, int width, int height, const std::vector<unsigned char>& rgb) {
   PendingFile out(path);
@@ -272,8 +339,8 @@ std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vec
   std::FILE* f = open_memstream(&data, &size);
   if (!f) throw std::bad_alloc();
   PngSink sink{f, 0, ""};
-  const PngScanlines image = png_scanlines(width, height, rgb.data());
-  const ZlibStream idat = zlib_compress_in_bands(image.filtered(), 1);
+  PngScanlines image = png_scanlines(width, height, rgb.data());
+  const ZlibStream idat = image.bands_->writer.finish();
   const std::string error = png_write_chunks(sink, width, height, idat.span());
   std::fclose(f);
   std::vector<unsigned char> png(data, data + size);

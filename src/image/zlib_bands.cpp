@@ -9,6 +9,7 @@
 #include <array>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <new>
 #include <stdexcept>
 #include <vector>
@@ -252,53 +253,100 @@ class BandCompressor {
 
 }  // namespace
 
+// Compressors for the threads compressing at a time, each made once and
+// lent to one band at a time: libdeflate's tables are large, and a thread
+// that keeps one hot compresses faster than one that makes its own.
+class ZlibBandWriter::Compressors {
+ public:
+  std::unique_ptr<BandCompressor> take() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (!idle_.empty()) {
+        std::unique_ptr<BandCompressor> c = std::move(idle_.back());
+        idle_.pop_back();
+        return c;
+      }
+    }
+    return std::make_unique<BandCompressor>();
+  }
+  void give_back(std::unique_ptr<BandCompressor> c) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    idle_.push_back(std::move(c));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<BandCompressor>> idle_;
+};
+
+ZlibBandWriter::ZlibBandWriter(std::uint64_t size, std::size_t band_bytes)
+    : size_(size), band_bytes_(band_bytes), compressors_(std::make_unique<Compressors>()) {
+  if (band_bytes == 0) throw std::logic_error("zlib bands of 0 bytes");
+  const std::uint64_t bands = std::max<std::uint64_t>(1, (size + band_bytes - 1) / band_bytes);
+  if (bands > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
+    throw std::length_error("too many zlib bands");
+  written_.resize(bands);
+  adler_.resize(bands);
+  compressed_.resize(bands);
+  // Each band's room in the output follows the one before, after the 2-byte
+  // header; finish() closes them up. Only the pages a band writes are touched.
+  room_begin_.assign(bands + 1, 2);
+  for (std::size_t b = 0; b < bands; ++b) room_begin_[b + 1] = room_begin_[b] + band_room(band_size(b));
+  stream_.bytes = std::make_unique_for_overwrite<unsigned char[]>(room_begin_[bands] + 4);
+}
+
+ZlibBandWriter::~ZlibBandWriter() = default;
+
+std::size_t ZlibBandWriter::band_size(std::size_t b) const {
+  const std::uint64_t begin = static_cast<std::uint64_t>(b) * band_bytes_;
+  return static_cast<std::size_t>(std::min<std::uint64_t>(band_bytes_, size_ - begin));
+}
+
+void ZlibBandWriter::compress(std::size_t b, std::span<const unsigned char> input) {
+  if (b >= bands() || input.size() != band_size(b)) throw std::logic_error("zlib band: wrong band or size");
+  std::unique_ptr<BandCompressor> compressor = compressors_->take();
+  const std::span<unsigned char> room(stream_.bytes.get() + room_begin_[b], room_begin_[b + 1] - room_begin_[b]);
+  written_[b] = compressor->compress(input, room, b + 1 == bands());
+  adler_[b] = libdeflate_adler32(1, input.data(), input.size());
+  compressed_[b] = 1;
+  compressors_->give_back(std::move(compressor));
+}
+
+ZlibStream ZlibBandWriter::finish() {
+  if (size_ == 0 && !compressed_[0]) compress(0, {});
+  if (std::find(compressed_.begin(), compressed_.end(), 0) != compressed_.end())
+    throw std::logic_error("zlib bands: a band was not compressed");
+  // The header (deflate, 32 KiB window, the fastest level, as libdeflate's
+  // zlib writer gives it), the bands closed up in order, the Adler-32.
+  unsigned char* out = stream_.bytes.get();
+  out[0] = 0x78;
+  out[1] = 0x01;
+  std::size_t size = 2;
+  uLong checksum = 1;
+  for (std::size_t b = 0; b < bands(); ++b) {
+    std::memmove(out + size, out + room_begin_[b], written_[b]);
+    size += written_[b];
+    checksum = adler32_combine(checksum, adler_[b], static_cast<z_off_t>(band_size(b)));
+  }
+  for (int shift = 24; shift >= 0; shift -= 8) out[size++] = static_cast<unsigned char>(checksum >> shift);
+  stream_.size = size;
+  return std::move(stream_);
+}
+
 std::uint64_t zlib_compress_in_bands_memory(std::uint64_t size, std::size_t band_bytes) {
   const std::uint64_t whole = size / band_bytes, rest = size % band_bytes;
   return 6 + whole * band_room(band_bytes) + (rest != 0 || size == 0 ? band_room(rest) : 0);
 }
 
 ZlibStream zlib_compress_in_bands(std::span<const unsigned char> data, int threads, std::size_t band_bytes) {
-  if (band_bytes == 0) throw std::logic_error("zlib bands of 0 bytes");
-  const std::size_t bands = std::max<std::size_t>(1, (data.size() + band_bytes - 1) / band_bytes);
-  if (bands > static_cast<std::size_t>(std::numeric_limits<int>::max())) throw std::length_error("too many zlib bands");
-  // Band b's input, and its room in the output: after the 2-byte header, each
-  // band's room follows the one before.
-  auto input = [&](std::size_t b) {
-    const std::size_t begin = b * band_bytes;
-    return data.subspan(begin, std::min(band_bytes, data.size() - begin));
-  };
-  std::vector<std::size_t> room_begin(bands + 1, 2);
-  for (std::size_t b = 0; b < bands; ++b) room_begin[b + 1] = room_begin[b] + band_room(input(b).size());
-  ZlibStream stream{std::make_unique_for_overwrite<unsigned char[]>(room_begin[bands] + 4), 0};
-  std::vector<std::size_t> written(bands);
-  std::vector<std::uint32_t> adler(bands);
-
-  parallel_rows_with(
-      threads, static_cast<int>(bands), [] { return BandCompressor(); },
-      [&](const tbb::blocked_range<int>& range, BandCompressor& compressor) {
+  ZlibBandWriter writer(data.size(), band_bytes);
+  parallel_rows(threads, static_cast<int>(writer.bands()), [&](const tbb::blocked_range<int>& range) {
     for (int i = range.begin(); i != range.end(); ++i) {
       const auto b = static_cast<std::size_t>(i);
-      const std::span<unsigned char> room(stream.bytes.get() + room_begin[b], room_begin[b + 1] - room_begin[b]);
-      written[b] = compressor.compress(input(b), room, b + 1 == bands);
-      adler[b] = libdeflate_adler32(1, input(b).data(), input(b).size());
+      writer.compress(b, data.subspan(b * writer.band_bytes(), writer.band_size(b)));
     }
   });
-
-  // The header (deflate, 32 KiB window, the fastest level, as libdeflate's
-  // zlib writer gives it), the bands closed up in order, the Adler-32.
-  unsigned char* out = stream.bytes.get();
-  out[0] = 0x78;
-  out[1] = 0x01;
-  std::size_t size = 2;
-  uLong checksum = 1;
-  for (std::size_t b = 0; b < bands; ++b) {
-    std::memmove(out + size, out + room_begin[b], written[b]);
-    size += written[b];
-    checksum = adler32_combine(checksum, adler[b], static_cast<z_off_t>(input(b).size()));
-  }
-  for (int shift = 24; shift >= 0; shift -= 8) out[size++] = static_cast<unsigned char>(checksum >> shift);
-  stream.size = size;
-  return stream;
+  return writer.finish();
 }
 
 }  // namespace capsim

@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <vector>
 
 namespace capsim {
 
@@ -38,9 +39,48 @@ struct ZlibStream {
   std::span<const unsigned char> span() const { return {bytes.get(), size}; }
 };
 
-// `data` as one zlib stream: header 78 01, the bands' DEFLATE data, the
-// Adler-32 of `data`. Compressed on `threads` host threads (0 = all); the
-// bytes depend only on `data` and `band_bytes` (> 0).
+// One zlib stream of `size` bytes of input, compressed a band at a time as
+// each band's input is whole, by whichever thread has it: so a caller that
+// makes its input in pieces (a PNG's rows, as they are traced) needs to keep
+// only the bands not yet whole. Each band's input is compressed alone, so the
+// stream does not depend on the order the bands come in, nor on the threads.
+class ZlibBandWriter {
+ public:
+  // band_bytes > 0; throws std::length_error for more bands than an int counts.
+  explicit ZlibBandWriter(std::uint64_t size, std::size_t band_bytes = kZlibBandBytes);
+  ~ZlibBandWriter();
+  ZlibBandWriter(const ZlibBandWriter&) = delete;
+  ZlibBandWriter& operator=(const ZlibBandWriter&) = delete;
+
+  std::size_t band_bytes() const { return band_bytes_; }
+  std::size_t bands() const { return written_.size(); }
+  // Band b's bytes of input: band_bytes, or what is left for the last band.
+  std::size_t band_size(std::size_t b) const;
+
+  // Compresses band b from its band_size(b) bytes of input. Safe to call from
+  // several threads at once for different bands; each band once.
+  void compress(std::size_t b, std::span<const unsigned char> input);
+
+  // The stream: header 78 01, the bands' DEFLATE data in order, the Adler-32
+  // of the whole input. Throws std::logic_error if some band with input was
+  // not compressed. Once.
+  ZlibStream finish();
+
+ private:
+  class Compressors;
+
+  std::uint64_t size_;
+  std::size_t band_bytes_;
+  std::vector<std::size_t> room_begin_;  // band b's room in stream_, and the end
+  ZlibStream stream_;
+  std::vector<std::size_t> written_;      // compressed bytes of each band
+  std::vector<std::uint32_t> adler_;      // Adler-32 of each band's input
+  std::vector<unsigned char> compressed_; // per band: 1 once compressed
+  std::unique_ptr<Compressors> compressors_;
+};
+
+// `data` as one zlib stream (ZlibBandWriter's), compressed on `threads` host
+// threads (0 = all); the bytes depend only on `data` and `band_bytes` (> 0).
 ZlibStream zlib_compress_in_bands(std::span<const unsigned char> data, int threads,
                                   std::size_t band_bytes = kZlibBandBytes);
 

@@ -6,6 +6,7 @@
 #include "capsim/system/shared_library.h"
 #include "support/cli_run.h"
 #include "image/exr_writer_module.h"
+#include "image/zlib_bands.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -14,6 +15,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
 
 using namespace capsim;
 using namespace capsim::testing;
@@ -162,4 +167,62 @@ TEST(ImageIo, EqualImagesGiveEqualBytes) {
   write_image(dir / "b.png", fb);
   EXPECT_TRUE(read_file(dir / "a.exr") == read_file(dir / "b.exr"));
   EXPECT_TRUE(read_file(dir / "a.png") == read_file(dir / "b.png"));
+}
+
+// A PNG's scanlines put row by row, in an order that leaves bands half full
+// for a while, from two threads: the file's image data is the zlib stream of
+// the Sub-filtered rows as a whole, filtered here independently. Rows of 2,101
+// bytes cross the 48 KiB bands' edges at every offset a 700-pixel row gives.
+TEST(ImageIo, PngScanlinesHoldTheSubFilteredRowsCompressed) {
+  TempDir dir;
+  const int w = 700, h = 90;
+  const std::size_t row_bytes = 3 * w;
+  std::vector<unsigned char> rgb(row_bytes * h);
+  std::uint32_t state = 4242;
+  for (std::size_t k = 0; k < rgb.size(); ++k) {
+    state = state * 1664525u + 1013904223u;
+    rgb[k] = static_cast<unsigned char>((k / 997) % 5 * 40 + ((state >> 28) == 0 ? state >> 24 : 0));
+  }
+  std::vector<unsigned char> filtered;
+  for (int j = 0; j < h; ++j) {
+    const unsigned char* p = rgb.data() + j * row_bytes;
+    filtered.push_back(1);
+    for (std::size_t k = 0; k < row_bytes; ++k) filtered.push_back(static_cast<unsigned char>(p[k] - (k >= 3 ? p[k - 3] : 0)));
+  }
+  const ZlibStream expected = zlib_compress_in_bands(filtered, 1);
+
+  PngScanlines image(w, h);
+  const auto put = [&](int first) {  // rows first, first + 3, ... from the bottom up
+    for (int j = h - 1 - first; j >= 0; j -= 3) image.put_row(j, {rgb.data() + j * row_bytes, row_bytes});
+  };
+  std::thread other(put, 1);
+  put(0);
+  other.join();
+  put(2);
+  EXPECT_THROW(image.put_row(0, {rgb.data(), row_bytes}), std::logic_error);  // put twice
+  EXPECT_THROW(image.put_row(h, {rgb.data(), row_bytes}), std::logic_error);
+  {
+    PendingFile out(dir / "x.png");
+    write_png(out, image);
+    out.commit();
+  }
+  // The image data: every IDAT chunk's data, in order.
+  const std::string file = read_file(dir / "x.png");
+  std::string idat;
+  for (std::size_t at = 8; at + 12 <= file.size();) {
+    const std::size_t length = (std::size_t{static_cast<unsigned char>(file[at])} << 24) |
+                               (std::size_t{static_cast<unsigned char>(file[at + 1])} << 16) |
+                               (std::size_t{static_cast<unsigned char>(file[at + 2])} << 8) |
+                               static_cast<unsigned char>(file[at + 3]);
+    if (file.compare(at + 4, 4, "IDAT") == 0) idat += file.substr(at + 8, length);
+    at += 12 + length;
+  }
+  EXPECT_TRUE(idat == std::string(expected.span().begin(), expected.span().end()));
+}
+
+// A row of the wrong size is refused before anything is put.
+TEST(ImageIo, PngScanlinesRefuseARowOfTheWrongSize) {
+  PngScanlines image(4, 3);
+  EXPECT_THROW(image.put_row(1, std::vector<unsigned char>(11)), std::logic_error);
+  image.put_row(1, std::vector<unsigned char>(12, 7));
 }

@@ -10,7 +10,10 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
+#include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace capsim;
@@ -232,3 +235,30 @@ TEST(ZlibBands, ReadNothingPastTheirInput) {
 }
 
 }  // namespace
+
+// Bands compressed one at a time, in any order and on any thread, make the
+// stream compressing the whole input at once makes; a band left out, or given
+// the wrong input size, is refused.
+TEST(ZlibBands, WrittenBandByBandGiveTheWholeInputsStream) {
+  const Bytes input = picture(300'000);
+  const ZlibStream whole = zlib_compress_in_bands(input, 1);
+  ZlibBandWriter writer(input.size());
+  ASSERT_EQ(writer.bands(), 7u);  // 6 whole bands of 48 KiB and a last of 5,088 bytes
+  EXPECT_EQ(writer.band_size(6), 300'000 - 6 * kZlibBandBytes);
+  const auto band = [&](std::size_t b) {
+    return std::span<const unsigned char>(input).subspan(b * kZlibBandBytes, writer.band_size(b));
+  };
+  EXPECT_THROW(writer.compress(0, band(6)), std::logic_error);
+  EXPECT_THROW(writer.compress(7, {}), std::logic_error);
+  std::thread other([&] {
+    for (const std::size_t b : {5u, 1u, 3u}) writer.compress(b, band(b));
+  });
+  for (const std::size_t b : {6u, 0u, 4u, 2u}) writer.compress(b, band(b));
+  other.join();
+  const ZlibStream banded = writer.finish();
+  EXPECT_TRUE(Bytes(banded.span().begin(), banded.span().end()) == Bytes(whole.span().begin(), whole.span().end()));
+
+  ZlibBandWriter missing(input.size());
+  for (std::size_t b = 0; b + 1 < missing.bands(); ++b) missing.compress(b, band(b));
+  EXPECT_THROW(missing.finish(), std::logic_error);
+}

@@ -80,15 +80,14 @@ TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
     const std::size_t row_bytes = static_cast<std::size_t>(w) * 3;
     const auto fill = [&](int parity) {
       for (int j = h - 1 - parity; j >= 0; j -= 2) {
-        std::memcpy(image.row(j), rgb.data() + static_cast<std::size_t>(j) * row_bytes, row_bytes);
-        image.filter_row(j);
+        image.put_row(j, {rgb.data() + static_cast<std::size_t>(j) * row_bytes, row_bytes});
       }
     };
     std::thread other(fill, 1);
     fill(0);
     other.join();
     PendingFile out(dir / "lines.png");
-    write_png(out, image, 3);
+    write_png(out, image);
     out.commit();
     write_png_rgb8(dir / "rgb.png", w, h, rgb);
     EXPECT_TRUE(read_file(dir / "lines.png") == read_file(dir / "rgb.png")) << w << "x" << h;
@@ -100,15 +99,13 @@ TEST(ImageIo, PngFromScanlinesEqualsPngFromRgb) {
   }
 }
 
-// A row never filtered (its pixels perhaps never written) is refused, and
+// A row never put (its pixels perhaps never traced) is refused, and
 // nothing is left behind.
-TEST(ImageIo, PngScanlinesRefuseARowNotFiltered) {
+TEST(ImageIo, PngScanlinesRefuseARowNotPut) {
   TempDir dir;
   PngScanlines image(4, 3);
-  for (const int j : {0, 2}) {
-    std::memset(image.row(j), 9, 12);
-    image.filter_row(j);
-  }
+  const std::vector<unsigned char> row(12, 9);
+  for (const int j : {0, 2}) image.put_row(j, row);
   {
     PendingFile out(dir / "x.png");
     EXPECT_THROW(write_png(out, image), std::logic_error);

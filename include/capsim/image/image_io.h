@@ -56,49 +56,49 @@ void write_png_rgb8(const std::string& path, int width, int height,
                     const std::vector<unsigned char>& rgb);
 void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<unsigned char>& rgb);
 
-// An 8-bit sRGB RGB image held as a PNG's scanlines: per row, the filter-type
-// byte, then 3 bytes per pixel, left to right. Whoever makes a row writes its
-// pixels in place (row) and filters it (filter_row) while it is still in cache,
-// on any thread, for different rows; writing the file then only compresses.
-// This spares write_png_rgb8's copy of the image and its second buffer of
-// image size, and, on several threads, the one-thread filtering pass. The
-// buffer is not zero-filled: each page is first touched by the thread that
-// fills its rows.
+// An 8-bit sRGB RGB image on its way into a PNG's compressed image data.
+// Whoever makes a row puts it (put_row), on any thread, for different rows;
+// the row is put under the Sub filter (each byte less the same channel of the
+// pixel to its left, after the filter-type byte) into the 48 KiB bands the
+// image data is compressed in, and the thread that makes a band whole
+// compresses it at once, while it is still in cache. A band's memory is then
+// used again for a later band: the rows of an image traced top to bottom
+// never take more than a few bands, where the whole image's scanlines would
+// touch a page of new memory every 4 KiB (docs/performance.md).
 class PngScanlines {
  public:
   PngScanlines(int width, int height);
+  ~PngScanlines();
+  PngScanlines(PngScanlines&&) noexcept;
+  PngScanlines& operator=(PngScanlines&&) noexcept;
 
   int width() const { return width_; }
   int height() const { return height_; }
 
-  // Row j's 3 * width bytes, R, G, B per pixel; written before filter_row(j).
-  unsigned char* row(int j) { return data_.get() + static_cast<std::size_t>(j) * stride() + 1; }
+  // Row j's pixels: 3 * width bytes, R, G, B per pixel. Once per row; throws
+  // std::logic_error for a row out of range, of another size or put before.
+  void put_row(int j, std::span<const unsigned char> rgb);
 
-  // Puts row j, once it is whole, under the Sub filter (each byte less the same
-  // channel of the pixel to its left), in place. Once per row.
-  void filter_row(int j);
-
-  // Every row's filter byte and bytes, as the PNG's image data compresses
-  // them. Throws std::logic_error if some row was not filtered.
-  std::span<const unsigned char> filtered() const;
-
-  // The bytes a width x height image takes.
+  // The most bytes of scanlines a width x height image holds at once: every
+  // row's filter byte and pixels, should the rows come in an order that makes
+  // no band whole before the last.
   static std::uint64_t bytes(int width, int height);
 
  private:
-  std::size_t stride() const { return 3 * static_cast<std::size_t>(width_) + 1; }
+  friend void write_png(PendingFile& out, PngScanlines& image);
+  friend std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vector<unsigned char>& rgb);
+  struct Bands;
 
   int width_;
   int height_;
-  std::unique_ptr<unsigned char[]> data_;
-  std::vector<unsigned char> row_filtered_;  // per row: 1 once filter_row ran
+  std::unique_ptr<Bands> bands_;
+  std::vector<unsigned char> row_put_;  // per row: 1 once put
 };
 
 // That image as a PNG file, the file write_png_rgb8 writes of the same pixels,
-// into a pending file the caller commits; throws std::runtime_error. The image
-// data is compressed on `threads` host threads (0 = all); the file's bytes do
-// not depend on them.
-void write_png(PendingFile& out, const PngScanlines& image, int threads = 1);
+// into a pending file the caller commits; throws std::runtime_error, and
+// std::logic_error if some row was not put. Once per image.
+void write_png(PendingFile& out, PngScanlines& image);
 
 // The working memory write_png takes beyond the scanlines: the compressed data.
 std::uint64_t write_png_memory(int width, int height);

@@ -58,18 +58,21 @@ Command add_render_command(CLI::App& app) {
       Progress* rows = frames == 1 ? &*progress : nullptr;
       PendingFile& out = outputs[frame_output_option(k, numbered)];
       if (png) {
-        // Colour only, straight to the PNG's filtered 8-bit rows, each by the
-        // thread that traced it: no float framebuffer to fill and convert.
+        // Colour only, straight to the PNG's 8-bit rows, each put by the
+        // thread that traced it, which compresses the bands it makes whole:
+        // no float framebuffer to fill and convert.
         PngScanlines image(width, height);
         render_rows(
             tracer, settings.threads,
             [&](int j, std::span<const PixelSample> row) {
-              encode_srgb8_row(row, image.row(j));
-              image.filter_row(j);
+              thread_local std::vector<unsigned char> rgb;
+              rgb.resize(3 * row.size());
+              encode_srgb8_row(row, rgb.data());
+              image.put_row(j, rgb);
             },
             nullptr, rows, aa);
         times.end("trace");
-        write_png(out, image, settings.threads);
+        write_png(out, image);
       } else if (aa.depth == 0) {
         const Framebuffer fb = render(tracer, settings.threads, nullptr, rows);
         times.end("trace");
