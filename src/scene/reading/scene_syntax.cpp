@@ -12,8 +12,10 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <iterator>
 #include <string_view>
+#include <vector>
 
 namespace capsim::scene_file {
 namespace {
@@ -39,16 +41,54 @@ bool is_language_keyword(std::string_view name) {
 class Reader {
  public:
   Reader(const std::vector<Token>& tokens, std::pmr::memory_resource* memory, double t)
-      : tokens_(tokens), memory_(memory), t_(t) {}
+      : tokens_(tokens), memory_(memory), t_(t), statements_in_(count_statements(tokens)) {}
 
   std::pmr::vector<Call> file(Loc* end) {
     std::pmr::vector<Call> calls(memory_);
+    calls.reserve(statements_in_[0]);
     while (peek().kind != TokenKind::End) statement(calls);
     if (end) *end = peek().loc;
     return calls;
   }
 
  private:
+  static bool is_symbol(const Token& t, std::string_view s) {
+    return t.kind == TokenKind::Symbol && t.text == s;
+  }
+
+  // The calls each list of calls will hold, read ahead from the tokens, so
+  // that each list is made once at its size: a monotonic resource never reuses
+  // what a growing list leaves behind, and a file's one union of thousands of
+  // objects would leave twice its size. Entry 0 is the file's own list, entry
+  // k the list of the call body opened by the file's k-th '{'. A call ends
+  // with ';' after its ')' or with the '}' of a body opened after its ')';
+  // it is counted in the list of the innermost body around it (or the file),
+  // a bare block's calls going to the list the block is in. A count is only
+  // an allocation's size: whatever the tokens, the lists hold what is read.
+  static std::vector<std::uint32_t> count_statements(const std::vector<Token>& tokens) {
+    std::vector<std::uint32_t> counts(1, 0);
+    std::vector<std::size_t> owners(1, 0);  // per '{' open, the list its calls go to
+    std::vector<bool> body_ends;            // per '{' open: its '}' ends a call
+    for (std::size_t i = 0; i < tokens.size(); ++i) {
+      const Token& t = tokens[i];
+      if (t.kind != TokenKind::Symbol) continue;
+      const bool after_call = i > 0 && is_symbol(tokens[i - 1], ")");
+      if (t.text == "{") {
+        counts.push_back(0);
+        owners.push_back(after_call ? counts.size() - 1 : owners.back());
+        body_ends.push_back(after_call);
+      } else if (t.text == "}" && !body_ends.empty()) {
+        const bool ends_call = body_ends.back();
+        owners.pop_back();
+        body_ends.pop_back();
+        if (ends_call) ++counts[owners.back()];
+      } else if (t.text == ";" && after_call) {
+        ++counts[owners.back()];
+      }
+    }
+    return counts;
+  }
+
   const Token& peek(size_t ahead = 0) const {
     size_t i = pos_ + ahead;
     return i < tokens_.size() ? tokens_[i] : tokens_.back();
@@ -120,6 +160,7 @@ class Reader {
     if (at_symbol("{")) {
       Nesting level(*this, peek());
       const Token& open = take();
+      ++braces_taken_;
       block_rest(open, out);
       return;
     }
@@ -190,6 +231,7 @@ class Reader {
     Nesting level(*this, peek());
     if (at_symbol("{")) {
       const Token& open = take();
+      call.children.reserve(statements_in_[++braces_taken_]);
       block_rest(open, call.children);
       return;
     }
@@ -646,6 +688,10 @@ class Reader {
   // allocation of its final size (a monotonic resource never reuses what a
   // growing list leaves behind).
   std::vector<Value> pending_items_;
+  // count_statements' counts, and the '{' tokens taken so far: every '{' the
+  // reader meets is taken by statement() or body(), in the file's order.
+  std::vector<std::uint32_t> statements_in_;
+  std::size_t braces_taken_ = 0;
 };
 
 }  // namespace
