@@ -91,7 +91,7 @@ void png_flush_sink(png_structp png) {
 // object of this one changed after setjmp would be indeterminate after the
 // jump).
 // Returns the error text or "".
-std::string png_write_chunks(PngSink& sink, int width, int height, std::span<const unsigned char> idat) {
+std::string png_write_chunks(PngSink& sink, int width, int height, const ZlibStream& idat) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_keep_error, nullptr);
   if (!png) return "cannot start the PNG encoder";
   png_infop info = png_create_info_struct(png);
@@ -105,7 +105,13 @@ std::string png_write_chunks(PngSink& sink, int width, int height, std::span<con
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
   png_write_info(png, info);
-  png_write_chunk(png, reinterpret_cast<png_const_bytep>("IDAT"), idat.data(), idat.size());
+  // One IDAT chunk, its data written piece by piece: the bytes png_write_chunk
+  // writes of the joined stream, and its limit on a chunk's length.
+  const std::size_t idat_size = idat.size();
+  if (idat_size > PNG_UINT_31_MAX) png_error(png, "length exceeds PNG maximum");
+  png_write_chunk_start(png, reinterpret_cast<png_const_bytep>("IDAT"), static_cast<png_uint_32>(idat_size));
+  for (const std::span<const unsigned char> piece : idat.pieces()) png_write_chunk_data(png, piece.data(), piece.size());
+  png_write_chunk_end(png);
   png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
   png_write_flush(png);
   png_destroy_write_struct(&png, &info);
@@ -118,7 +124,7 @@ void write_png_file(const PendingFile& out, int width, int height, const ZlibStr
   std::FILE* f = std::fopen(out.temp_path().c_str(), "wb");
   if (!f) throw std::runtime_error(fmt::format("{}: {}", path, std::strerror(errno)));
   PngSink sink{f, 0, ""};
-  const std::string error = png_write_chunks(sink, width, height, idat.span());
+  const std::string error = png_write_chunks(sink, width, height, idat);
   const bool closed = std::fclose(f) == 0;
   const int close_error = errno;
   if (!error.empty()) throw std::runtime_error(fmt::format("{}: {}", path, error));
@@ -341,7 +347,7 @@ std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vec
   PngSink sink{f, 0, ""};
   PngScanlines image = png_scanlines(width, height, rgb.data());
   const ZlibStream idat = image.bands_->writer.finish();
-  const std::string error = png_write_chunks(sink, width, height, idat.span());
+  const std::string error = png_write_chunks(sink, width, height, idat);
   std::fclose(f);
   std::vector<unsigned char> png(data, data + size);
   std::free(data);

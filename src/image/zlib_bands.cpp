@@ -12,6 +12,7 @@
 #include <mutex>
 #include <new>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace capsim {
@@ -212,8 +213,24 @@ class BandCompressor {
     if (zlib_ready_) deflateEnd(&zlib_);
   }
 
-  // `in` as DEFLATE data into `out` (band_room(in.size()) bytes); the last band
-  // ends the stream, any other ends byte-aligned and not final. Returns the
+  // `in` as DEFLATE data in a copy of its own size; the last band ends the
+  // stream, any other ends byte-aligned and not final. The data is first
+  // written into this compressor's room, which serves every band it takes,
+  // so only the copy touches new memory.
+  std::pair<std::unique_ptr<unsigned char[]>, std::size_t> compress(std::span<const unsigned char> in, bool last) {
+    const std::size_t room = band_room(in.size());
+    if (room_size_ < room) {
+      room_ = std::make_unique_for_overwrite<unsigned char[]>(room);
+      room_size_ = room;
+    }
+    const std::size_t n = compress(in, {room_.get(), room}, last);
+    auto data = std::make_unique_for_overwrite<unsigned char[]>(n);
+    std::memcpy(data.get(), room_.get(), n);
+    return {std::move(data), n};
+  }
+
+ private:
+  // `in` as DEFLATE data into `out` (band_room(in.size()) bytes); returns the
   // bytes written.
   std::size_t compress(std::span<const unsigned char> in, std::span<unsigned char> out, bool last) {
     const std::size_t n = libdeflate_deflate_compress(libdeflate_.get(), in.data(), in.size(), out.data(), out.size());
@@ -228,7 +245,6 @@ class BandCompressor {
     return compress_with_zlib(in, out);
   }
 
- private:
   std::size_t compress_with_zlib(std::span<const unsigned char> in, std::span<unsigned char> out) {
     if (!zlib_ready_) {
       zlib_ = z_stream{};
@@ -249,6 +265,8 @@ class BandCompressor {
   Compressor libdeflate_;
   z_stream zlib_{};
   bool zlib_ready_ = false;
+  std::unique_ptr<unsigned char[]> room_;
+  std::size_t room_size_ = 0;
 };
 
 }  // namespace
@@ -285,14 +303,10 @@ ZlibBandWriter::ZlibBandWriter(std::uint64_t size, std::size_t band_bytes)
   const std::uint64_t bands = std::max<std::uint64_t>(1, (size + band_bytes - 1) / band_bytes);
   if (bands > static_cast<std::uint64_t>(std::numeric_limits<int>::max()))
     throw std::length_error("too many zlib bands");
-  written_.resize(bands);
+  stream_.bands_.resize(bands);
+  stream_.band_sizes_.resize(bands);
   adler_.resize(bands);
   compressed_.resize(bands);
-  // Each band's room in the output follows the one before, after the 2-byte
-  // header; finish() closes them up. Only the pages a band writes are touched.
-  room_begin_.assign(bands + 1, 2);
-  for (std::size_t b = 0; b < bands; ++b) room_begin_[b + 1] = room_begin_[b] + band_room(band_size(b));
-  stream_.bytes = std::make_unique_for_overwrite<unsigned char[]>(room_begin_[bands] + 4);
 }
 
 ZlibBandWriter::~ZlibBandWriter() = default;
@@ -305,8 +319,9 @@ std::size_t ZlibBandWriter::band_size(std::size_t b) const {
 void ZlibBandWriter::compress(std::size_t b, std::span<const unsigned char> input) {
   if (b >= bands() || input.size() != band_size(b)) throw std::logic_error("zlib band: wrong band or size");
   std::unique_ptr<BandCompressor> compressor = compressors_->take();
-  const std::span<unsigned char> room(stream_.bytes.get() + room_begin_[b], room_begin_[b + 1] - room_begin_[b]);
-  written_[b] = compressor->compress(input, room, b + 1 == bands());
+  auto [data, n] = compressor->compress(input, b + 1 == bands());
+  stream_.bands_[b] = std::move(data);
+  stream_.band_sizes_[b] = n;
   adler_[b] = libdeflate_adler32(1, input.data(), input.size());
   compressed_[b] = 1;
   compressors_->give_back(std::move(compressor));
@@ -316,21 +331,33 @@ ZlibStream ZlibBandWriter::finish() {
   if (size_ == 0 && !compressed_[0]) compress(0, {});
   if (std::find(compressed_.begin(), compressed_.end(), 0) != compressed_.end())
     throw std::logic_error("zlib bands: a band was not compressed");
-  // The header (deflate, 32 KiB window, the fastest level, as libdeflate's
-  // zlib writer gives it), the bands closed up in order, the Adler-32.
-  unsigned char* out = stream_.bytes.get();
-  out[0] = 0x78;
-  out[1] = 0x01;
-  std::size_t size = 2;
   uLong checksum = 1;
-  for (std::size_t b = 0; b < bands(); ++b) {
-    std::memmove(out + size, out + room_begin_[b], written_[b]);
-    size += written_[b];
+  for (std::size_t b = 0; b < bands(); ++b)
     checksum = adler32_combine(checksum, adler_[b], static_cast<z_off_t>(band_size(b)));
-  }
-  for (int shift = 24; shift >= 0; shift -= 8) out[size++] = static_cast<unsigned char>(checksum >> shift);
-  stream_.size = size;
+  for (std::size_t k = 0; k < 4; ++k) stream_.adler32_[k] = static_cast<unsigned char>(checksum >> (24 - 8 * k));
   return std::move(stream_);
+}
+
+std::size_t ZlibStream::size() const {
+  std::size_t n = header_.size() + adler32_.size();
+  for (const std::size_t s : band_sizes_) n += s;
+  return n;
+}
+
+std::vector<std::span<const unsigned char>> ZlibStream::pieces() const {
+  std::vector<std::span<const unsigned char>> out;
+  out.reserve(bands_.size() + 2);
+  out.emplace_back(header_);
+  for (std::size_t b = 0; b < bands_.size(); ++b) out.emplace_back(bands_[b].get(), band_sizes_[b]);
+  out.emplace_back(adler32_);
+  return out;
+}
+
+std::vector<unsigned char> ZlibStream::joined() const {
+  std::vector<unsigned char> out;
+  out.reserve(size());
+  for (const std::span<const unsigned char> piece : pieces()) out.insert(out.end(), piece.begin(), piece.end());
+  return out;
 }
 
 std::uint64_t zlib_compress_in_bands_memory(std::uint64_t size, std::size_t band_bytes) {

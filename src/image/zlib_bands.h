@@ -15,6 +15,7 @@
 // with a full flush instead. Neither library's compressor picks its code by
 // the processor, so the stream is the same for the same input on any host.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -33,10 +34,23 @@ namespace capsim {
 // compressed data on the bench's lattices; longer ones pass the 8,192 there.
 inline constexpr std::size_t kZlibBandBytes = 49152;
 
-struct ZlibStream {
-  std::unique_ptr<unsigned char[]> bytes;
-  std::size_t size = 0;
-  std::span<const unsigned char> span() const { return {bytes.get(), size}; }
+// A zlib stream held as its pieces in order: the 2-byte header (deflate, 32
+// KiB window, the fastest level, as libdeflate's zlib writer gives it), each
+// band's DEFLATE data, the Adler-32 of the input. A PNG writes the pieces into
+// its image data chunk one after another, so no band's data is copied again
+// to join them, and no buffer the size of the stream is touched.
+class ZlibStream {
+ public:
+  std::size_t size() const;
+  std::vector<std::span<const unsigned char>> pieces() const;
+  std::vector<unsigned char> joined() const;
+
+ private:
+  friend class ZlibBandWriter;
+  std::array<unsigned char, 2> header_{0x78, 0x01};
+  std::vector<std::unique_ptr<unsigned char[]>> bands_;
+  std::vector<std::size_t> band_sizes_;
+  std::array<unsigned char, 4> adler32_{};
 };
 
 // One zlib stream of `size` bytes of input, compressed a band at a time as
@@ -53,7 +67,7 @@ class ZlibBandWriter {
   ZlibBandWriter& operator=(const ZlibBandWriter&) = delete;
 
   std::size_t band_bytes() const { return band_bytes_; }
-  std::size_t bands() const { return written_.size(); }
+  std::size_t bands() const { return compressed_.size(); }
   // Band b's bytes of input: band_bytes, or what is left for the last band.
   std::size_t band_size(std::size_t b) const;
 
@@ -61,9 +75,8 @@ class ZlibBandWriter {
   // several threads at once for different bands; each band once.
   void compress(std::size_t b, std::span<const unsigned char> input);
 
-  // The stream: header 78 01, the bands' DEFLATE data in order, the Adler-32
-  // of the whole input. Throws std::logic_error if some band with input was
-  // not compressed. Once.
+  // The stream. Throws std::logic_error if some band with input was not
+  // compressed. Once.
   ZlibStream finish();
 
  private:
@@ -71,11 +84,9 @@ class ZlibBandWriter {
 
   std::uint64_t size_;
   std::size_t band_bytes_;
-  std::vector<std::size_t> room_begin_;  // band b's room in stream_, and the end
-  ZlibStream stream_;
-  std::vector<std::size_t> written_;      // compressed bytes of each band
-  std::vector<std::uint32_t> adler_;      // Adler-32 of each band's input
-  std::vector<unsigned char> compressed_; // per band: 1 once compressed
+  ZlibStream stream_;                      // each band's data, once compressed
+  std::vector<std::uint32_t> adler_;       // Adler-32 of each band's input
+  std::vector<unsigned char> compressed_;  // per band: 1 once compressed
   std::unique_ptr<Compressors> compressors_;
 };
 

@@ -217,7 +217,8 @@ TEST(ImageIo, PngScanlinesHoldTheSubFilteredRowsCompressed) {
     if (file.compare(at + 4, 4, "IDAT") == 0) idat += file.substr(at + 8, length);
     at += 12 + length;
   }
-  EXPECT_TRUE(idat == std::string(expected.span().begin(), expected.span().end()));
+  const std::vector<unsigned char> stream = expected.joined();
+  EXPECT_TRUE(idat == std::string(stream.begin(), stream.end()));
 }
 
 // A row of the wrong size is refused before anything is put.
