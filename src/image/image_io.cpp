@@ -85,11 +85,11 @@ void png_flush_sink(png_structp png) {
 }
 
 // libpng writes the signature, the header and colour chunks, and the CRCs; the
-// image data comes ready from zlib_compress_in_bands. libpng reports errors by
-// longjmp; this frame holds nothing that needs destroying, so jumping out of
-// it is safe, and what the callbacks record lives in the caller's frame (an
-// object of this one changed after setjmp would be indeterminate after the
-// jump).
+// image data comes ready, compressed band by band (ZlibBandWriter). libpng
+// reports errors by longjmp; this frame holds nothing that needs destroying,
+// so jumping out of it is safe, and what the callbacks record lives in the
+// caller's frame (an object of this one changed after setjmp would be
+// indeterminate after the jump).
 // Returns the error text or "".
 std::string png_write_chunks(PngSink& sink, int width, int height, const ZlibStream& idat) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &sink, png_keep_error, nullptr);

@@ -92,6 +92,8 @@ class ZlibBandWriter {
 
 // `data` as one zlib stream (ZlibBandWriter's), compressed on `threads` host
 // threads (0 = all); the bytes depend only on `data` and `band_bytes` (> 0).
+// The form for an input held whole, which the tests take as the reference for
+// the band-by-band writers.
 ZlibStream zlib_compress_in_bands(std::span<const unsigned char> data, int threads,
                                   std::size_t band_bytes = kZlibBandBytes);
 

@@ -1,8 +1,9 @@
 #pragma once
 // How many host threads a parallel loop runs on, and the loop over an image's
 // rows that every tracing pass uses (voxel generation runs it over ranges of
-// primitives, the mode benchmarks over the runs of one traced screen, the PNG
-// writer over its image data's bands). The output never depends on them.
+// primitives, the mode benchmarks over the runs of one traced screen,
+// zlib_compress_in_bands over a whole input's bands). The output never
+// depends on them.
 
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
