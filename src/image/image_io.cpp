@@ -110,7 +110,7 @@ std::string png_write_chunks(PngSink& sink, int width, int height, const ZlibStr
   const std::size_t idat_size = idat.size();
   if (idat_size > PNG_UINT_31_MAX) png_error(png, "length exceeds PNG maximum");
   png_write_chunk_start(png, reinterpret_cast<png_const_bytep>("IDAT"), static_cast<png_uint_32>(idat_size));
-  for (const std::span<const unsigned char> piece : idat.pieces()) png_write_chunk_data(png, piece.data(), piece.size());
+  for (std::size_t k = 0; k < idat.pieces(); ++k) png_write_chunk_data(png, idat.piece(k).data(), idat.piece(k).size());
   png_write_chunk_end(png);
   png_write_chunk(png, reinterpret_cast<png_const_bytep>("IEND"), nullptr, 0);
   png_write_flush(png);

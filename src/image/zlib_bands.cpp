@@ -344,19 +344,16 @@ std::size_t ZlibStream::size() const {
   return n;
 }
 
-std::vector<std::span<const unsigned char>> ZlibStream::pieces() const {
-  std::vector<std::span<const unsigned char>> out;
-  out.reserve(bands_.size() + 2);
-  out.emplace_back(header_);
-  for (std::size_t b = 0; b < bands_.size(); ++b) out.emplace_back(bands_[b].get(), band_sizes_[b]);
-  out.emplace_back(adler32_);
-  return out;
+std::span<const unsigned char> ZlibStream::piece(std::size_t k) const {
+  if (k == 0) return header_;
+  if (k <= bands_.size()) return {bands_[k - 1].get(), band_sizes_[k - 1]};
+  return adler32_;
 }
 
 std::vector<unsigned char> ZlibStream::joined() const {
   std::vector<unsigned char> out;
   out.reserve(size());
-  for (const std::span<const unsigned char> piece : pieces()) out.insert(out.end(), piece.begin(), piece.end());
+  for (std::size_t k = 0; k < pieces(); ++k) out.insert(out.end(), piece(k).begin(), piece(k).end());
   return out;
 }
 

@@ -42,7 +42,10 @@ inline constexpr std::size_t kZlibBandBytes = 49152;
 class ZlibStream {
  public:
   std::size_t size() const;
-  std::vector<std::span<const unsigned char>> pieces() const;
+  // Piece k of pieces(): no allocation, so a caller that may longjmp (libpng's
+  // errors) holds nothing that needs destroying.
+  std::size_t pieces() const { return bands_.size() + 2; }
+  std::span<const unsigned char> piece(std::size_t k) const;
   std::vector<unsigned char> joined() const;
 
  private:
