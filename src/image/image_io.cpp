@@ -271,12 +271,16 @@ void PngScanlines::put_row(int j, std::span<const unsigned char> rgb) {
   }
 }
 
-void write_png(PendingFile& out, PngScanlines& image) {
-  if (std::find(image.row_put_.begin(), image.row_put_.end(), 0) != image.row_put_.end())
+ZlibStream PngScanlines::image_data() {
+  if (std::find(row_put_.begin(), row_put_.end(), 0) != row_put_.end())
     throw std::logic_error("PNG scanlines: a row was not put");
-  const ZlibStream idat = image.bands_->writer.finish();
-  image.bands_.reset();
-  write_png_file(out, image.width(), image.height(), idat);
+  ZlibStream idat = bands_->writer.finish();
+  bands_.reset();
+  return idat;
+}
+
+void write_png(PendingFile& out, PngScanlines& image) {
+  write_png_file(out, image.width(), image.height(), image.image_data());
 }
 
 std::uint64_t write_png_memory(int width, int height) {
@@ -346,7 +350,7 @@ std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vec
   if (!f) throw std::bad_alloc();
   PngSink sink{f, 0, ""};
   PngScanlines image = png_scanlines(width, height, rgb.data());
-  const ZlibStream idat = image.bands_->writer.finish();
+  const ZlibStream idat = image.image_data();
   const std::string error = png_write_chunks(sink, width, height, idat);
   std::fclose(f);
   std::vector<unsigned char> png(data, data + size);

@@ -65,6 +65,8 @@ void write_png_rgb8(PendingFile& out, int width, int height, const std::vector<u
 // used again for a later band: the rows of an image traced top to bottom
 // never take more than a few bands, where the whole image's scanlines would
 // touch a page of new memory every 4 KiB (docs/performance.md).
+class ZlibStream;  // src/image/zlib_bands.h
+
 class PngScanlines {
  public:
   PngScanlines(int width, int height);
@@ -88,6 +90,10 @@ class PngScanlines {
   friend void write_png(PendingFile& out, PngScanlines& image);
   friend std::vector<unsigned char> encode_png_rgb8(int width, int height, const std::vector<unsigned char>& rgb);
   struct Bands;
+
+  // The image data, compressed; throws std::logic_error if some row was not
+  // put. Once: the bands' memory goes with it.
+  ZlibStream image_data();
 
   int width_;
   int height_;

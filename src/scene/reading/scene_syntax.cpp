@@ -98,10 +98,7 @@ class Reader {
     if (pos_ + 1 < tokens_.size()) ++pos_;
     return t;
   }
-  bool at_symbol(std::string_view s, size_t ahead = 0) const {
-    const Token& t = peek(ahead);
-    return t.kind == TokenKind::Symbol && t.text == s;
-  }
+  bool at_symbol(std::string_view s, size_t ahead = 0) const { return is_symbol(peek(ahead), s); }
   // Every syntax error comes here. One at the end of the file, or at a name
   // that is the file's last token (a complete file ends with ';' or '}'),
   // means the file ends inside a statement: a truncated file, reported as
