@@ -34,8 +34,11 @@ class FifoReader {
       : path_(std::move(path)), content_(std::async(std::launch::async, [p = path_] { return read_file(p); })) {}
   // What was read. A capsim that never opened the FIFO leaves the reader
   // waiting: a writer of our own that closes at once ends its wait with nothing.
+  // That writer's open fails (ENXIO) while the reader's thread has not yet
+  // reached its own open, as on a loaded machine, so it is tried until the
+  // reader is done.
   std::string finish() {
-    if (content_.wait_for(std::chrono::milliseconds(0)) != std::future_status::ready) {
+    while (content_.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready) {
       const int fd = ::open(path_.c_str(), O_WRONLY | O_NONBLOCK);
       if (fd >= 0) ::close(fd);
     }
