@@ -20,7 +20,7 @@ struct PreviewBoxes {
   Aabb drawn[2];  // [0]: drawn positively, [1]: negatively
 };
 
-PreviewBoxes preview(const CsgNode& n, const std::vector<PreparedPrimitive>& prims) {
+PreviewBoxes preview(const CsgNode& n, std::span<const PreparedPrimitive> prims) {
   PreviewBoxes r;
   if (n.is_leaf) {
     r.node = prims[static_cast<std::size_t>(n.primitive)].world_bounds;
@@ -70,11 +70,11 @@ PreviewBoxes preview(const CsgNode& n, const std::vector<PreparedPrimitive>& pri
 
 }  // namespace
 
-Aabb openscad_preview_bounds(const CsgNode& node, const std::vector<PreparedPrimitive>& prims) {
+Aabb openscad_preview_bounds(const CsgNode& node, std::span<const PreparedPrimitive> prims) {
   return preview(node, prims).drawn[0];
 }
 
-Aabb csg_result_bounds(const CsgNode& n, const std::vector<PreparedPrimitive>& prims) {
+Aabb csg_result_bounds(const CsgNode& n, std::span<const PreparedPrimitive> prims) {
   if (n.is_leaf) return prims[static_cast<std::size_t>(n.primitive)].world_bounds;
   Aabb r;
   bool first = true;

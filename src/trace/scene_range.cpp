@@ -19,7 +19,7 @@ double reach(const Aabb& b) {
 
 }  // namespace
 
-void check_scene_range(const Scene& scene, const std::vector<PreparedPrimitive>& prims,
+void check_scene_range(const Scene& scene, std::span<const PreparedPrimitive> prims,
                        const std::vector<bool>& placed, const Aabb& universe) {
   const glm::dvec3 extent = universe.extent();
   const double size = std::max({extent.x, extent.y, extent.z});

@@ -125,7 +125,7 @@ void meet_other(std::uint32_t p, const PreparedPrimitive& prim, const Ray& ray, 
 // mailbox), in the voxel's order.
 template <typename AddCrossing>
 void meet_primitives(std::span<const std::uint32_t> voxel,
-                     const std::vector<PreparedPrimitive>& prims, const std::vector<RoundSphereSlot>& spheres,
+                     std::span<const PreparedPrimitive> prims, const std::vector<RoundSphereSlot>& spheres,
                      const Ray& ray, Tracer::Scratch& s, OpCounts& ops, AddCrossing add) {
   for (const std::uint32_t p : voxel) {
     if (s.mailbox[p] == s.stamp) continue;
@@ -146,7 +146,7 @@ void meet_primitives(std::span<const std::uint32_t> voxel,
 constexpr std::size_t kCrowdedVoxel = 8;
 
 [[gnu::noinline]] void meet_crowded_voxel(std::span<const std::uint32_t> voxel,
-                                          const std::vector<PreparedPrimitive>& prims,
+                                          std::span<const PreparedPrimitive> prims,
                                           const std::vector<RoundSphereSlot>& spheres, const Ray& ray,
                                           Tracer::Scratch& s, OpCounts& ops) {
   meet_primitives(voxel, prims, spheres, ray, s, ops, [&](const Crossing& c) { s.fresh.push_back(c); });
@@ -326,7 +326,7 @@ double scene_epsilon(const PreparedScene& s) {
 // found along `ray`. Always inlined: at the end of first_hit's walk it is
 // what the normal's chain of operations starts from.
 [[gnu::always_inline]] inline void complete(const Ray& ray, Hit& hit, const std::vector<RoundSphereSlot>& spheres,
-                                            const std::vector<PreparedPrimitive>& prims, OpCounts& ops) {
+                                            std::span<const PreparedPrimitive> prims, OpCounts& ops) {
   hit.point = ray.at(hit.t);
   // A round sphere's normal comes from the packed slot the walk reads
   // already, not from the primitive's record.

@@ -307,7 +307,7 @@ double grid_epsilon(const Aabb& universe) {
 
 }  // namespace
 
-Aabb universe_of(const std::vector<PreparedPrimitive>& prims, const std::vector<bool>& placed) {
+Aabb universe_of(std::span<const PreparedPrimitive> prims, const std::vector<bool>& placed) {
   Aabb u;
   for (std::size_t i = 0; i < prims.size(); ++i)
     if (placed[i]) u.extend(prims[i].world_bounds);
@@ -319,7 +319,7 @@ Aabb universe_of(const std::vector<PreparedPrimitive>& prims, const std::vector<
   return u;
 }
 
-VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
+VoxelGrid generate_voxels(std::span<const PreparedPrimitive> prims,
                           const std::vector<bool>& placed, const Aabb& universe, int n,
                           VoxelGenCounts* counts, int threads) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
@@ -361,7 +361,7 @@ VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
   return g;
 }
 
-std::vector<VoxelGenCounts> voxel_counts_by_primitive(const std::vector<PreparedPrimitive>& prims,
+std::vector<VoxelGenCounts> voxel_counts_by_primitive(std::span<const PreparedPrimitive> prims,
                                                       const std::vector<bool>& placed, const Aabb& universe,
                                                       int n) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
@@ -377,7 +377,7 @@ std::vector<VoxelGenCounts> voxel_counts_by_primitive(const std::vector<Prepared
   return counts;
 }
 
-VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
+VoxelGrid generate_voxels_aabb(std::span<const PreparedPrimitive> prims,
                                const std::vector<bool>& placed, const Aabb& universe, int n) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
   const double eps = grid_epsilon(universe);
@@ -390,7 +390,7 @@ VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
   return build_grid(universe, n, std::span<const Placements>(&placements, 1));
 }
 
-std::size_t bounding_box_entries(const std::vector<PreparedPrimitive>& prims,
+std::size_t bounding_box_entries(std::span<const PreparedPrimitive> prims,
                                  const std::vector<bool>& placed, const Aabb& universe, int n) {
   const glm::dvec3 vs = universe.extent() / static_cast<double>(n);
   const double eps = grid_epsilon(universe);
@@ -400,7 +400,7 @@ std::size_t bounding_box_entries(const std::vector<PreparedPrimitive>& prims,
   return entries;
 }
 
-int fitted_grid_divisions(const std::vector<PreparedPrimitive>& prims,
+int fitted_grid_divisions(std::span<const PreparedPrimitive> prims,
                           const std::vector<bool>& placed, const Aabb& universe) {
   const auto placed_count = static_cast<std::size_t>(std::count(placed.begin(), placed.end(), true));
   const std::size_t budget =

@@ -115,7 +115,7 @@ inline constexpr int kMaxPrimitivesPerTree = 40;
 // A random subtree. Operator nodes mostly have 2-4 children; a few have one
 // (a pass-through) or none (OpenSCAD's empty group, the empty set).
 inline capsim::CsgNode random_node(Rng& rng, int depth, int max_depth, double axis_aligned_share,
-                                   std::vector<capsim::Primitive>& prims, TreeShape& shape) {
+                                   capsim::LargeVector<capsim::Primitive>& prims, TreeShape& shape) {
   const bool leaf = depth == max_depth || static_cast<int>(prims.size()) >= kMaxPrimitivesPerTree ||
                     (depth > 0 && rng.chance(0.12 + 0.1 * depth));
   capsim::CsgNode node;

@@ -41,7 +41,7 @@ class Calls {
 
  private:
   std::shared_ptr<const std::string> file_;  // the locations name it
-  std::vector<scene_file::Token> tokens_;
+  scene_file::Tokens tokens_;
   std::pmr::monotonic_buffer_resource memory_;
   scene_file::Loc end_;
   std::pmr::vector<scene_file::Call> calls_;

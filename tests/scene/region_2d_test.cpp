@@ -35,7 +35,7 @@ class Calls {
   const scene_file::Call& first() const { return calls_.front(); }
 
  private:
-  std::vector<scene_file::Token> tokens_;
+  scene_file::Tokens tokens_;
   std::pmr::monotonic_buffer_resource memory_;
   scene_file::Loc end_;
   std::pmr::vector<scene_file::Call> calls_;

@@ -45,7 +45,7 @@ TEST(SceneSyntax, MakesEachListOfCallsOnceAtItsSize) {
       "a(); { b(); { c(); } } ;; d() e();\n"
       "f() { g(); h() { } ; { i(); } }\n"
       "j() k() { l(); m(); }\n";
-  const std::vector<Token> tokens = tokenize(text, std::make_shared<const std::string>("t.csg"));
+  const Tokens tokens = tokenize(text, std::make_shared<const std::string>("t.csg"));
   NotingResource memory;
   Loc end;
   const std::pmr::vector<Call> calls = read_calls(tokens, &memory, &end);
@@ -65,7 +65,7 @@ TEST(SceneSyntax, MakesALargeUnionsListOnce) {
   std::string text = "union() {\n";
   for (int i = 0; i < 1000; ++i) text += "  s();\n";
   text += "}\n";
-  const std::vector<Token> tokens = tokenize(text, std::make_shared<const std::string>("t.csg"));
+  const Tokens tokens = tokenize(text, std::make_shared<const std::string>("t.csg"));
   NotingResource memory;
   Loc end;
   const std::pmr::vector<Call> calls = read_calls(tokens, &memory, &end);

@@ -5,6 +5,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <iterator>
+#include <vector>
+
 namespace capsim::testing {
 
 inline Primitive sphere(glm::dvec3 c, double r) {
@@ -49,7 +52,7 @@ inline CsgNode op(CsgOp o, std::vector<CsgNode> kids) {
 // A scene of the given primitives under root (default: their union).
 inline Scene make_scene(std::vector<Primitive> prims, std::optional<CsgNode> root = std::nullopt) {
   Scene s;
-  s.primitives = std::move(prims);
+  s.primitives.assign(std::make_move_iterator(prims.begin()), std::make_move_iterator(prims.end()));
   if (root) {
     s.root = op(CsgOp::Union, {*root});
   } else {

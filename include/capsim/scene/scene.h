@@ -4,6 +4,7 @@
 // the planar faces of meshes); nothing is tessellated.
 
 #include "capsim/scene/bounds.h"
+#include "capsim/system/huge_pages.h"
 #include "capsim/scene/revolution.h"
 #include "capsim/scene/triangle_mesh.h"
 
@@ -128,7 +129,7 @@ struct Light {
 };
 
 struct Scene {
-  std::vector<Primitive> primitives;  // in the order they appear in the file
+  LargeVector<Primitive> primitives;  // in the order they appear in the file
   CsgNode root;                       // union of the top-level objects
   std::optional<Camera> camera;       // absent: frame the bounds (see default_camera)
   std::vector<Light> lights;          // empty: one white light at the eye

@@ -4,6 +4,7 @@
 
 #include "capsim/trace/primitive_geometry.h"
 
+#include <span>
 #include <vector>
 
 namespace capsim {
@@ -15,12 +16,12 @@ namespace capsim {
 // number of subtractions. An intersection frames all its children, not their
 // common part (OpenSCAD's CSGProduct::getBoundingBox extends where it "should
 // intersect").
-Aabb openscad_preview_bounds(const CsgNode& node, const std::vector<PreparedPrimitive>& prims);
+Aabb openscad_preview_bounds(const CsgNode& node, std::span<const PreparedPrimitive> prims);
 
 // A box holding what the CSG tree leaves: a union's is the union of its
 // children's, an intersection's their common part, a difference's its first
 // child's (what is subtracted only removes). Empty when the boxes show that
 // nothing is left (an intersection of boxes that do not meet).
-Aabb csg_result_bounds(const CsgNode& node, const std::vector<PreparedPrimitive>& prims);
+Aabb csg_result_bounds(const CsgNode& node, std::span<const PreparedPrimitive> prims);
 
 }  // namespace capsim

@@ -3,6 +3,7 @@
 // voxel grid, and the camera resolved. Immutable once built and shared by every
 // thread and every simulated cell.
 
+#include "capsim/system/huge_pages.h"
 #include "capsim/trace/openscad_camera.h"
 #include "capsim/trace/status_tree.h"
 #include "capsim/trace/voxel_grid.h"
@@ -32,7 +33,7 @@ struct PreparedScene {
   Camera camera;                        // resolved: the options', the scene's, or framed; with the size applied
   std::optional<OpenScadCameraOptions> openscad;  // the options that chose the camera, if any
   std::vector<Light> lights;            // resolved: the scene's, or one at the eye
-  std::vector<PreparedPrimitive> prims;  // same order as scene.primitives
+  LargeVector<PreparedPrimitive> prims;  // same order as scene.primitives
   std::vector<bool> placed;             // primitive contributes to the CSG tree
   StatusTree tree_template;
   VoxelGrid grid;

@@ -5,6 +5,7 @@
 #include "capsim/scene/scene_limits.h"
 #include "capsim/trace/primitive_geometry.h"
 
+#include <span>
 #include <vector>
 
 namespace capsim {
@@ -13,7 +14,7 @@ namespace capsim {
 // their universe): throws SceneError at the first placed primitive, in file
 // order, that is too small or too far for the scene's size, then at the
 // camera if its eye is too far.
-void check_scene_range(const Scene& scene, const std::vector<PreparedPrimitive>& prims,
+void check_scene_range(const Scene& scene, std::span<const PreparedPrimitive> prims,
                        const std::vector<bool>& placed, const Aabb& universe);
 
 }  // namespace capsim

@@ -61,7 +61,7 @@ class VoxelGridTooLarge : public std::length_error {
 
 // The universe: the union of the placed primitives' world bounds, padded so that
 // no primitive touches its faces.
-Aabb universe_of(const std::vector<PreparedPrimitive>& prims, const std::vector<bool>& placed);
+Aabb universe_of(std::span<const PreparedPrimitive> prims, const std::vector<bool>& placed);
 
 // Algorithm-3. For every placed primitive: transform its object bounding box to
 // world space (an oriented box), project it onto the X-Y plane, and in every voxel
@@ -73,7 +73,7 @@ Aabb universe_of(const std::vector<PreparedPrimitive>& prims, const std::vector<
 // VoxelGridTooLarge rather than hold more than kMaxVoxelEntries entries.
 // Primitives are placed on `threads` host threads (0 = all); the grid, the
 // counts and the refusal are the same for every count.
-VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
+VoxelGrid generate_voxels(std::span<const PreparedPrimitive> prims,
                           const std::vector<bool>& placed, const Aabb& universe, int n,
                           VoxelGenCounts* counts, int threads = 1);
 
@@ -82,12 +82,12 @@ VoxelGrid generate_voxels(const std::vector<PreparedPrimitive>& prims,
 // its (voxel, primitive) entries in voxel_entries and no grid_voxels (the
 // grid's, not a primitive's). Their sum plus the grid's n^3 voxels is
 // generate_voxels' count.
-std::vector<VoxelGenCounts> voxel_counts_by_primitive(const std::vector<PreparedPrimitive>& prims,
+std::vector<VoxelGenCounts> voxel_counts_by_primitive(std::span<const PreparedPrimitive> prims,
                                                       const std::vector<bool>& placed, const Aabb& universe, int n);
 
 // The same grid filled from each primitive's world axis-aligned bounding box only:
 // the baseline that Algorithm-3's tighter fit is measured against.
-VoxelGrid generate_voxels_aabb(const std::vector<PreparedPrimitive>& prims,
+VoxelGrid generate_voxels_aabb(std::span<const PreparedPrimitive> prims,
                                const std::vector<bool>& placed, const Aabb& universe, int n);
 
 // The automatic division count (docs/architecture.md gives the rule and its fit).
@@ -95,14 +95,14 @@ int auto_grid_divisions(std::size_t placed_primitives);
 
 // The entries generate_voxels_aabb would make: an upper bound of
 // generate_voxels' count, found in O(primitives) without placing anything.
-std::size_t bounding_box_entries(const std::vector<PreparedPrimitive>& prims,
+std::size_t bounding_box_entries(std::span<const PreparedPrimitive> prims,
                                  const std::vector<bool>& placed, const Aabb& universe, int n);
 
 // The divisions of --grid auto: auto_grid_divisions' count, or fewer while the
 // bounding-box entries would pass kAutoVoxelEntriesPerPrimitive per placed
 // primitive or kMaxVoxelEntries (never fewer than 1). Unchanged for primitives
 // that overlap little, as in every shipped scene.
-int fitted_grid_divisions(const std::vector<PreparedPrimitive>& prims,
+int fitted_grid_divisions(std::span<const PreparedPrimitive> prims,
                           const std::vector<bool>& placed, const Aabb& universe);
 
 }  // namespace capsim

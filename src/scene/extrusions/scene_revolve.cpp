@@ -11,6 +11,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <span>
 
 namespace capsim::scene_file {
 
@@ -45,7 +46,7 @@ Primitive revolve_square(const Call& call, const glm::dmat3& plane, const Revolv
 }
 
 // The x range the 2-D result of the tree can reach.
-glm::dvec2 reach(const CsgNode& node, const std::vector<Primitive>& all) {
+glm::dvec2 reach(const CsgNode& node, std::span<const Primitive> all) {
   if (node.is_leaf) return profile_x_range(all[static_cast<std::size_t>(node.primitive)].revolution->profile);
   glm::dvec2 range(kInfinity, -kInfinity);
   for (std::size_t i = 0; i < node.children.size(); ++i) {
@@ -131,7 +132,7 @@ void check_one_side_of_axis(double min_x, double max_x, const Loc& loc) {
                                       min_x, max_x));
 }
 
-void finish_revolution(const CsgNode& tree, std::vector<Primitive>& all, const Revolve& r, const Loc& loc) {
+void finish_revolution(const CsgNode& tree, LargeVector<Primitive>& all, const Revolve& r, const Loc& loc) {
   const glm::dvec2 range = reach(tree, all);
   check_one_side_of_axis(range.x, range.y, loc);
   const bool mirror = range.x < 0;

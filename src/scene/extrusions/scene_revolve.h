@@ -47,6 +47,6 @@ void check_one_side_of_axis(double min_x, double max_x, const Loc& loc);
 // sides of the axis (judged by the tree's box: a union's boxes joined, an
 // intersection's met, a difference's first), and turns a shape at x <= 0 as
 // its mirror image from the -x axis. Rewrites the tree's leaves in `all`.
-void finish_revolution(const CsgNode& tree, std::vector<Primitive>& all, const Revolve& r, const Loc& loc);
+void finish_revolution(const CsgNode& tree, LargeVector<Primitive>& all, const Revolve& r, const Loc& loc);
 
 }  // namespace capsim::scene_file

@@ -6,6 +6,7 @@
 #include "capsim/scene/parser.h"
 
 #include "capsim/scene/scene_limits.h"
+#include "capsim/system/huge_pages.h"
 
 #include <fmt/format.h>
 
@@ -148,6 +149,9 @@ class Interpreter {
     root.op = CsgOp::Union;
     root.loc = SourceLoc{file_, 1, 1};
     root.children.reserve(calls.size());
+    // Room for the primitives at once: a large scene's would otherwise be
+    // copied at each doubling, each time into fresh memory.
+    all_primitives_.reserve(std::min(primitive_calls(calls), max_primitives_));
     int objects = 0;
     contexts_.emplace_back();  // the top level's
     for (const Call& call : calls) {
@@ -167,9 +171,14 @@ class Interpreter {
                                   "or cylinder");
     }
     if (root_) root.children = {std::move(*root_)};
-    // Keep only the primitives the final tree uses, numbered in file order.
-    scene_.primitives.reserve(all_primitives_.size());
-    compact(root);
+    // Keep only the primitives the final tree uses, numbered in file order:
+    // usually all of them in the order made, and then the list is the scene's.
+    if (std::size_t next = 0; numbers_all_in_order(root, next) && next == all_primitives_.size()) {
+      scene_.primitives = std::move(all_primitives_);
+    } else {
+      scene_.primitives.reserve(all_primitives_.size());
+      compact(root);
+    }
     scene_.root = std::move(root);
     return std::move(scene_);
   }
@@ -708,6 +717,22 @@ class Interpreter {
     return pass_through(call, std::move(outlines));
   }
 
+  // How many calls of primitives the calls hold, all levels down: the
+  // primitives they make when no loop or module repeats any.
+  static std::size_t primitive_calls(std::span<const Call> calls) {
+    std::size_t count = 0;
+    for (const Call& call : calls) count += (is_primitive(call.name) ? 1 : 0) + primitive_calls(call.children);
+    return count;
+  }
+
+  // Whether the leaves of `node`, in order, number the primitives from `next` on.
+  static bool numbers_all_in_order(const CsgNode& node, std::size_t& next) {
+    if (node.is_leaf) return node.primitive == static_cast<int>(next++);
+    for (const CsgNode& child : node.children)
+      if (!numbers_all_in_order(child, next)) return false;
+    return true;
+  }
+
   void compact(CsgNode& node) {
     if (node.is_leaf) {
       scene_.primitives.push_back(std::move(all_primitives_[node.primitive]));
@@ -725,7 +750,7 @@ class Interpreter {
   // them by index, never by reference across a call, as the list grows.
   std::vector<Context> contexts_;
   Scene scene_;
-  std::vector<Primitive> all_primitives_;  // including those of dropped subtrees
+  LargeVector<Primitive> all_primitives_;  // including those of dropped subtrees
   std::optional<CsgNode> root_;            // the '!' subtree, if any
   std::optional<scene_file::Revolve> revolve_;  // inside rotate_extrude: its 2-D leaves are turned
   Loc root_loc_;
@@ -753,16 +778,17 @@ Scene parse_scene(std::string_view text, const std::string& file_name, const Par
                   double t, const std::string& import_dir) {
   auto file = std::make_shared<const std::string>(file_name);
   if (text.size() > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
-  std::vector<scene_file::Token> tokens = scene_file::tokenize(text, file);
+  scene_file::Tokens tokens = scene_file::tokenize(text, file);
   Loc end;
   // Holds the lists of the calls (see scene_syntax.h); declared first, so it
   // outlives them.
-  std::pmr::monotonic_buffer_resource memory;
+  std::pmr::monotonic_buffer_resource memory(huge_page_resource());
   std::pmr::vector<Call> calls = scene_file::read_calls(tokens, &memory, &end, t);
   const bool has_statements = tokens.size() > 1;
-  // The calls view the text, not the tokens: the tokens' memory can go back to
-  // the heap for the scene about to be built.
-  std::vector<scene_file::Token>().swap(tokens);
+  // The calls view the text, not the tokens: the tokens' memory can go back
+  // before the scene is built.
+  tokens.clear();
+  tokens.shrink_to_fit();
   const std::string dir =
       import_dir.empty() ? std::filesystem::path(file_name).parent_path().string() : import_dir;
   return Interpreter(file, limits, dir).run(calls, has_statements, end);
@@ -779,6 +805,9 @@ std::string read_scene_file(const std::string& path, const ParseLimits& limits) 
   const std::uintmax_t size = std::filesystem::file_size(path, size_error);
   if (!size_error && size > limits.max_file_bytes) refuse_file_size(file, limits.max_file_bytes);
   std::string text;
+  // Room for the whole file at once: growing by doubling would copy the text,
+  // each time into fresh memory.
+  if (!size_error) text.reserve(static_cast<std::size_t>(size) + 1);
   char buffer[1 << 16];
   for (;;) {
     size_t n = std::fread(buffer, 1, sizeof buffer, f.get());

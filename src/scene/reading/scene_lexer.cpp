@@ -3,6 +3,8 @@
 
 #include "scene/reading/scene_lexer.h"
 
+#include "capsim/system/huge_pages.h"
+
 #include <fmt/format.h>
 
 #include <array>
@@ -61,12 +63,12 @@ class Lexer {
   Lexer(std::string_view text, const std::shared_ptr<const std::string>& file)
       : text_(text), file_(&file) {}
 
-  std::vector<Token> run() {
+  Tokens run() {
     // A UTF-8 byte-order mark written by some editors is not part of the scene.
     if (text_.starts_with("\xEF\xBB\xBF")) advance_on_line(3);
     // A CSG export has about one token per two bytes; reserving that up front
     // spares a large scene the copies (and fresh pages) of repeated growth.
-    std::vector<Token> tokens;
+    Tokens tokens(huge_page_resource());
     tokens.reserve(text_.size() / 2 + 2);
     for (;;) {
       skip_space_and_comments();
@@ -249,7 +251,7 @@ class Lexer {
 
 }  // namespace
 
-std::vector<Token> tokenize(std::string_view text, const std::shared_ptr<const std::string>& file) {
+Tokens tokenize(std::string_view text, const std::shared_ptr<const std::string>& file) {
   return Lexer(text, file).run();
 }
 

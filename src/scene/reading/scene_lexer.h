@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <memory_resource>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,12 +41,16 @@ struct Token {
   Loc loc;
 };
 
+// A file's tokens. A large file's take megabytes, so they lie on huge pages
+// (capsim/system/huge_pages.h).
+using Tokens = std::pmr::vector<Token>;
+
 // The whole file as tokens, ending with one End token placed just after the last
 // character. The tokens view `text` and point at `file`: both must outlive them
 // and everything read from them. Throws SceneError on unterminated strings and
 // comments, stray characters, bad escapes, malformed numbers and numbers outside
 // the range of a double.
-std::vector<Token> tokenize(std::string_view text, const std::shared_ptr<const std::string>& file);
+Tokens tokenize(std::string_view text, const std::shared_ptr<const std::string>& file);
 
 // The value of a String token's text, its escapes (already checked by tokenize)
 // decoded.

@@ -40,7 +40,7 @@ bool is_language_keyword(std::string_view name) {
 
 class Reader {
  public:
-  Reader(const std::vector<Token>& tokens, std::pmr::memory_resource* memory, double t)
+  Reader(const Tokens& tokens, std::pmr::memory_resource* memory, double t)
       : tokens_(tokens), memory_(memory), t_(t), statements_in_(count_statements(tokens)) {}
 
   std::pmr::vector<Call> file(Loc* end) {
@@ -65,7 +65,7 @@ class Reader {
   // it is counted in the list of the innermost body around it (or the file),
   // a bare block's calls going to the list the block is in. A count is only
   // an allocation's size: whatever the tokens, the lists hold what is read.
-  static std::vector<std::uint32_t> count_statements(const std::vector<Token>& tokens) {
+  static std::vector<std::uint32_t> count_statements(const Tokens& tokens) {
     std::vector<std::uint32_t> counts(1, 0);
     std::vector<std::size_t> owners(1, 0);  // per '{' open, the list its calls go to
     std::vector<bool> body_ends;            // per '{' open: its '}' ends a call
@@ -674,7 +674,7 @@ class Reader {
                            takes == "1" ? "" : "s", count));
   }
 
-  const std::vector<Token>& tokens_;
+  const Tokens& tokens_;
   std::pmr::memory_resource* memory_;
   double t_;  // the value of $t
   size_t pos_ = 0;
@@ -693,7 +693,7 @@ class Reader {
 
 }  // namespace
 
-std::pmr::vector<Call> read_calls(const std::vector<Token>& tokens,
+std::pmr::vector<Call> read_calls(const Tokens& tokens,
                                   std::pmr::memory_resource* memory, Loc* end, double t) {
   return Reader(tokens, memory, t).file(end);
 }

@@ -80,7 +80,7 @@ inline constexpr int kMaxNestingDepth = 1000;
 // OpenSCAD would not evaluate to a value (a wrong type or argument count) or
 // that gives a number that is not finite, and on nesting deeper than
 // kMaxNestingDepth.
-std::pmr::vector<Call> read_calls(const std::vector<Token>& tokens,
+std::pmr::vector<Call> read_calls(const Tokens& tokens,
                                   std::pmr::memory_resource* memory, Loc* end, double t = 0);
 
 }  // namespace capsim::scene_file
