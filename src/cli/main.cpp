@@ -1,12 +1,12 @@
 // capsim: the Cellular Array Processor ray-tracing simulator.
 
+#include "capsim/system/process_heap.h"
 #include "capsim/system/temp_file_registry.h"
 #include "cli/commands/cli_commands.h"
 #include "cli/command_failure.h"
 #include "cli/options/cli_usage.h"
 
 #include <fmt/core.h>
-#include <malloc.h>
 
 #include <csignal>
 #include <cstdio>
@@ -15,17 +15,6 @@
 
 namespace {
 
-// Keeps freed memory for reuse: blocks up to glibc's limit for the setting
-// (32 MiB) come from the heap rather than from mappings of their own, and the
-// heap is never trimmed. Parsing a large scene frees megabytes that voxel
-// generation, the tracer and the image then reuse; returned to the system,
-// every page of theirs would be faulted in and zeroed again, which cost about
-// a tenth of a primary-only megapixel render of a 6,859-sphere scene.
-void keep_freed_memory() {
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
-}
-
 // An error message on stderr; a stderr that cannot take it has no better
 // place to be told, so a failure to write it is let go.
 void tell(const std::string& text) { std::fputs((text + "\n").c_str(), stderr); }
@@ -33,7 +22,7 @@ void tell(const std::string& text) { std::fputs((text + "\n").c_str(), stderr); 
 }  // namespace
 
 int main(int argc, char** argv) {
-  keep_freed_memory();
+  capsim::set_up_process_heap();
   capsim::remove_temp_files_on_signals();  // before TBB starts any thread
   // A reader of stdout that goes away (`capsim ... | head -1`) makes writes
   // fail with EPIPE rather than end the process: the outputs are still written
