@@ -37,7 +37,9 @@ class HugePageResource final : public std::pmr::memory_resource {
     const auto start = reinterpret_cast<std::uintptr_t>(map);
     const std::uintptr_t aligned = (start + huge_ - 1) / huge_ * huge_;
     if (aligned > start) ::munmap(map, aligned - start);
-    if (const std::size_t tail = start + length + huge_ - (aligned + length); tail > 0)
+    // The tail runs from the block's end, aligned + length, to the
+    // mapping's, start + length + huge_.
+    if (const std::size_t tail = start + huge_ - aligned; tail > 0)
       ::munmap(reinterpret_cast<void*>(aligned + length), tail);
     // Refused (EINVAL) where the kernel has no transparent huge pages: the
     // block is then ordinary pages.
