@@ -1,4 +1,5 @@
 #include "capsim/system/process_heap.h"
+#include "capsim/system/sanitizers.h"
 
 #include <gtest/gtest.h>
 #include <sys/mman.h>
@@ -9,14 +10,6 @@
 #include <cstring>
 #include <fstream>
 #include <string>
-
-#if defined(__SANITIZE_ADDRESS__)
-#define CAPSIM_MALLOC_REPLACED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define CAPSIM_MALLOC_REPLACED 1
-#endif
-#endif
 
 namespace {
 
@@ -67,7 +60,7 @@ bool huge_pages_always() {
 class ProcessHeap : public testing::Test {
  protected:
   void SetUp() override {
-#ifdef CAPSIM_MALLOC_REPLACED
+#ifdef CAPSIM_ADDRESS_SANITIZER
     GTEST_SKIP() << "AddressSanitizer replaces glibc's malloc, whose heap this sets up";
 #endif
     if (!kernel_populates()) GTEST_SKIP() << "the kernel has no MADV_POPULATE_WRITE (Linux 5.14 and later)";

@@ -10,6 +10,7 @@
 
 #include "scene/meshes/threemf_import.h"
 
+#include "capsim/system/sanitizers.h"
 #include "capsim/system/shared_library.h"
 
 #include <Model/COM/NMR_DLLInterfaces.h>
@@ -167,14 +168,7 @@ std::vector<MeshObject> read_3mf(const std::string& path, std::string data) {
 
 }  // namespace capsim::scene_file
 
-#if defined(__SANITIZE_ADDRESS__)
-#define CAPSIM_LEAK_CHECKED 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define CAPSIM_LEAK_CHECKED 1
-#endif
-#endif
-#ifdef CAPSIM_LEAK_CHECKED
+#ifdef CAPSIM_ADDRESS_SANITIZER
 // lib3mf 1.8.1 leaves a few hundred bytes of libzip's allocations behind on
 // every package it reads (a bare create-read-release of a model leaks them
 // too), which LeakSanitizer would report at the exit of any program that
