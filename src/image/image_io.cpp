@@ -1,6 +1,7 @@
 #include "capsim/image/image_io.h"
 
 #include "capsim/image/srgb.h"
+#include "capsim/system/huge_pages.h"
 #include "capsim/system/shared_library.h"
 #include "image/exr_writer_module.h"
 #include "image/zlib_bands.h"
@@ -155,26 +156,28 @@ const SharedLibrary& exr_module() {
 
 void write_exr_file(const PendingFile& out, const Framebuffer& fb, const std::vector<ExtraChannel>& extra) {
   const std::size_t pixels = static_cast<std::size_t>(fb.width) * fb.height;
-  // Planar copies, one per channel, in the order the header lists them.
-  std::vector<std::pair<std::string, std::vector<float>>> planes;
-  for (int c = 0; c < 4; ++c) {
-    std::vector<float> v(pixels);
-    for (std::size_t k = 0; k < pixels; ++k) v[k] = fb.rgba[4 * k + c];
-    planes.emplace_back(std::string(1, "RGBA"[c]), std::move(v));
-  }
-  planes.emplace_back("Z", fb.depth);
-  planes.emplace_back("id", fb.id);
-  for (const ExtraChannel& e : extra) planes.emplace_back(e.name, e.values);
-
+  // The channels in the order the header lists them: R, G, B and A as planar
+  // copies of the interleaved colour, the others as they are.
+  static constexpr const char* kColourNames[] = {"R", "G", "B", "A"};
+  std::vector<LargeVector<float>> colour(4, LargeVector<float>(pixels));
   std::vector<const char*> names;
   std::vector<const float*> values;
-  for (const auto& [name, plane] : planes) {
-    names.push_back(name.c_str());
-    values.push_back(plane.data());
+  for (std::size_t c = 0; c < 4; ++c) {
+    for (std::size_t k = 0; k < pixels; ++k) colour[c][k] = fb.rgba[4 * k + c];
+    names.push_back(kColourNames[c]);
+    values.push_back(colour[c].data());
+  }
+  names.push_back("Z");
+  values.push_back(fb.depth.data());
+  names.push_back("id");
+  values.push_back(fb.id.data());
+  for (const ExtraChannel& e : extra) {
+    names.push_back(e.name.c_str());
+    values.push_back(e.values.data());
   }
   char error[1024] = "";
   const auto write = exr_module().function<decltype(&capsim_write_exr)>("capsim_write_exr");
-  if (write(out.temp_path().c_str(), fb.width, fb.height, static_cast<int>(planes.size()), names.data(),
+  if (write(out.temp_path().c_str(), fb.width, fb.height, static_cast<int>(names.size()), names.data(),
             values.data(), error, sizeof error) != 0) {
     // OpenEXR names the file it was given: name the target instead.
     std::string message = error;

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstring>
 #include <set>
+#include <span>
 #include <string>
 
 namespace capsim::sim {
@@ -37,7 +38,7 @@ MachineConfig config_of(CellGrid grid, PixelMode mode, int depth, LinkTopology t
   return c;
 }
 
-bool same_floats(const std::vector<float>& a, const std::vector<float>& b) {
+bool same_floats(std::span<const float> a, std::span<const float> b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0;
 }
 

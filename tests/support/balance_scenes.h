@@ -12,6 +12,7 @@
 
 #include <cstring>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,7 +35,7 @@ inline PreparedScene random_scene(unsigned seed, int width, int height) {
   return prepare_scene(parse_scene(text, "random.csg"), {});
 }
 
-inline bool same_floats(const std::vector<float>& a, const std::vector<float>& b) {
+inline bool same_floats(std::span<const float> a, std::span<const float> b) {
   // An 8-bit screen has no floats: memcmp must not see its null data.
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(float)) == 0);
 }
